@@ -1,0 +1,58 @@
+#pragma once
+// Input validation at the API boundary. Every rejection names the function, the
+// parameter, the offending value and the valid range, so a CLI can print it as one line.
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace lac {
+
+/// Thrown for invalid input only (never for non-convergence, which is a Status).
+class InputError : public std::domain_error {
+ public:
+  InputError(std::string parameter, const std::string& message)
+      : std::domain_error(message), parameter_(std::move(parameter)) {}
+  const std::string& parameter() const noexcept { return parameter_; }
+
+ private:
+  std::string parameter_;
+};
+
+/// Formats a double so that the message stays one short line.
+inline std::string format_number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+[[noreturn]] inline void throw_input_error(std::string_view function, std::string_view parameter,
+                                           double value, std::string_view valid_range) {
+  std::string msg;
+  msg.append(function).append(": ").append(parameter).append(" = ").append(format_number(value));
+  msg.append(" is outside its valid range ").append(valid_range);
+  throw InputError(std::string(parameter), msg);
+}
+
+[[noreturn]] inline void throw_input_error(std::string_view function, std::string_view parameter,
+                                           std::string_view what) {
+  std::string msg;
+  msg.append(function).append(": ").append(parameter).append(": ").append(what);
+  throw InputError(std::string(parameter), msg);
+}
+
+inline void require_finite(std::string_view function, std::string_view parameter, double value) {
+  if (!std::isfinite(value)) throw_input_error(function, parameter, value, "(finite real numbers)");
+}
+
+/// Half-open or open interval text for messages, e.g. "(-inf, 2.5)".
+inline std::string interval_text(double lo, double hi, bool lo_closed = false, bool hi_closed = false) {
+  return std::string(lo_closed ? "[" : "(") + format_number(lo) + ", " + format_number(hi) +
+         (hi_closed ? "]" : ")");
+}
+
+}  // namespace lac

@@ -1,0 +1,31 @@
+#pragma once
+// Outcome of a numerical algorithm. Non-convergence is reported here, never thrown.
+#include <string_view>
+
+namespace lac {
+
+enum class Status {
+  ok,                 ///< converged / tolerance met
+  tolerance_not_met,  ///< finished within its caps but the error estimate exceeds the tolerance
+  max_iterations,     ///< iteration or evaluation cap reached
+  fell_back,          ///< primary method unusable here; result from the documented fallback
+  no_solution,        ///< the problem has no solution (e.g. no curve exists for this input)
+  numerical_failure,  ///< a non-finite intermediate value; result not usable
+};
+
+constexpr std::string_view to_string(Status s) {
+  switch (s) {
+    case Status::ok: return "ok";
+    case Status::tolerance_not_met: return "tolerance_not_met";
+    case Status::max_iterations: return "max_iterations";
+    case Status::fell_back: return "fell_back";
+    case Status::no_solution: return "no_solution";
+    case Status::numerical_failure: return "numerical_failure";
+  }
+  return "unknown";
+}
+
+/// True when the value can be used (possibly from a fallback).
+constexpr bool usable(Status s) { return s == Status::ok || s == Status::fell_back || s == Status::tolerance_not_met; }
+
+}  // namespace lac

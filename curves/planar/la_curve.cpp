@@ -1,0 +1,101 @@
+#include "curves/planar/la_curve.hpp"
+
+#include <cmath>
+
+#include "common/error.hpp"
+
+namespace lac {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+LaCurve::LaCurve(double alpha, double lambda) : alpha_(alpha), lambda_(lambda) {
+  require_finite("LaCurve", "alpha", alpha);
+  if (!(lambda >= 0) || !std::isfinite(lambda)) throw_input_error("LaCurve", "lambda", lambda, "[0, inf)");
+}
+
+Interval LaCurve::theta_domain() const {
+  if (lambda_ == 0 || alpha_ == 1) return {};
+  if (alpha_ < 1) return {-kInf, 1.0 / ((1.0 - alpha_) * lambda_)};
+  return {-1.0 / ((alpha_ - 1.0) * lambda_), kInf};
+}
+
+Interval LaCurve::s_domain() const {
+  if (lambda_ == 0 || alpha_ == 0) return {};
+  if (alpha_ < 0) return {-kInf, -1.0 / (alpha_ * lambda_)};
+  return {-1.0 / (alpha_ * lambda_), kInf};
+}
+
+void LaCurve::check(Parameter p, double t, const char* name) const {
+  const Interval d = domain(p);
+  if (!d.contains(t)) {
+    throw_input_error("LaCurve(alpha=" + format_number(alpha_) + ", lambda=" + format_number(lambda_) + ")", name, t,
+                      interval_text(d.lo, d.hi));
+  }
+}
+
+double LaCurve::log_rho_at_theta(double theta) const {
+  check(Parameter::theta, theta, "theta");
+  return log_rho_at_theta_unchecked(theta);
+}
+
+double LaCurve::log_rho_at_s(double s) const {
+  check(Parameter::s, s, "s");
+  const double x = lambda_ * s;
+  return x * log1p_ratio(alpha_ * x);
+}
+
+double LaCurve::rho_at_theta(double theta) const { return std::exp(log_rho_at_theta(theta)); }
+double LaCurve::rho_at_s(double s) const { return std::exp(log_rho_at_s(s)); }
+double LaCurve::kappa_at_theta(double theta) const { return std::exp(-log_rho_at_theta(theta)); }
+double LaCurve::kappa_at_s(double s) const { return std::exp(-log_rho_at_s(s)); }
+
+double LaCurve::s_at_theta(double theta) const {
+  const double log_rho = log_rho_at_theta(theta);  // checks the domain
+  return theta * log1p_ratio((alpha_ - 1.0) * lambda_ * theta) * expm1_ratio(alpha_ * log_rho);
+}
+
+double LaCurve::theta_at_s(double s) const {
+  check(Parameter::s, s, "s");
+  return theta_at_s_unchecked(s);
+}
+
+// From log ρ = Λ θ g((α−1)Λθ): θ = (log ρ / Λ) h((α−1) log ρ); likewise s with α.
+double LaCurve::theta_at_log_rho(double log_rho) const {
+  if (!(lambda_ > 0)) throw_input_error("LaCurve::theta_at_log_rho", "lambda", lambda_, "(0, inf) (rho is constant when lambda = 0)");
+  require_finite("LaCurve::theta_at_log_rho", "log_rho", log_rho);
+  const double theta = log_rho / lambda_ * expm1_ratio((alpha_ - 1.0) * log_rho);
+  if (!std::isfinite(theta) || !theta_domain().contains(theta))
+    throw_input_error("LaCurve::theta_at_log_rho", "log_rho", log_rho, "values reached inside the theta domain");
+  return theta;
+}
+
+double LaCurve::s_at_log_rho(double log_rho) const {
+  if (!(lambda_ > 0)) throw_input_error("LaCurve::s_at_log_rho", "lambda", lambda_, "(0, inf) (rho is constant when lambda = 0)");
+  require_finite("LaCurve::s_at_log_rho", "log_rho", log_rho);
+  const double s = log_rho / lambda_ * expm1_ratio(alpha_ * log_rho);
+  if (!std::isfinite(s) || !s_domain().contains(s))
+    throw_input_error("LaCurve::s_at_log_rho", "log_rho", log_rho, "values reached inside the s domain");
+  return s;
+}
+
+CurvePoint LaCurve::frame_at(Parameter p, double t) const {
+  const char* name = p == Parameter::theta ? "theta" : "s";
+  check(p, t, name);
+  CurvePoint c;
+  const double log_rho = p == Parameter::theta ? log_rho_at_theta(t) : log_rho_at_s(t);
+  c.theta = to_theta(p, t);
+  c.s = to_s(p, t);
+  c.rho = std::exp(log_rho);
+  c.kappa = std::exp(-log_rho);
+  if (!std::isfinite(c.s) || !std::isfinite(c.theta) || !(c.rho > 0) || !std::isfinite(c.rho) || !(c.kappa > 0) ||
+      !std::isfinite(c.kappa)) {
+    throw_input_error("LaCurve(alpha=" + format_number(alpha_) + ", lambda=" + format_number(lambda_) + ")", name, t,
+                      "where rho, s and theta are representable doubles (log rho = " + format_number(log_rho) + " here)");
+  }
+  return c;
+}
+
+}  // namespace lac

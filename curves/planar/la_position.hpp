@@ -1,0 +1,139 @@
+#pragma once
+// Position on a standard-form planar LA curve (MATH.md §1; 002 Eqs. 7–8) with any
+// quadrature method of integrators/quadrature.hpp, or with a closed form (igf) that
+// satisfies LaClosedForm.
+//   θ-form: C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ     s-form: C(s) = ∫₀^s e^{iθ(u)} du
+#include <algorithm>
+#include <complex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/status.hpp"
+#include "curves/planar/la_curve.hpp"
+#include "integrators/quadrature.hpp"
+
+namespace lac {
+
+/// Which integral represents the position. `automatic` picks per interval (see resolve_form).
+enum class Form { theta, s, automatic };
+
+constexpr std::string_view to_string(Form f) {
+  return f == Form::theta ? "theta" : f == Form::s ? "s" : "auto";
+}
+Form parse_form(std::string_view text);  // "theta" | "s" | "auto"; InputError otherwise
+
+/// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve.
+template <class M>
+concept LaClosedForm = requires(const M& m, const LaCurve& c) {
+  { m.integrate_theta(c, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
+  { m.validate() };
+  { M::name } -> std::convertible_to<std::string_view>;
+};
+
+/// The θ-form integrand is bounded where ρ ≤ 1 (θ ≤ 0) and grows without bound toward
+/// ρ → ∞; the s-form integrand has modulus 1 everywhere but oscillates without bound
+/// toward ρ → 0. `automatic` therefore uses the s-form on intervals that reach ρ > 1 when
+/// α ≤ 1/2 (where ρ → ∞ at a finite θ: the inflection for α < 0), as 002 does for α ≤ 0.5,
+/// and the θ-form otherwise (including Λ = 0, where both agree).
+inline Form resolve_form(const LaCurve& c, double theta_a, double theta_b, Form requested) {
+  if (requested != Form::automatic) return requested;
+  if (c.lambda() > 0 && c.alpha() <= 0.5 && std::max(theta_a, theta_b) > 0) return Form::s;
+  return Form::theta;
+}
+
+struct PositionResult {
+  CurvePoint point;
+  double error_estimate = 0;  ///< absolute, on the position
+  long evaluations = 0;       ///< integrand evaluations (cumulative along a polyline)
+  Status status = Status::ok;
+  std::string message;
+  Form form = Form::theta;    ///< form actually used
+};
+
+namespace detail {
+
+struct ThetaFormIntegrand {
+  const LaCurve* c;
+  std::complex<double> operator()(double psi) const { return std::polar(std::exp(c->log_rho_at_theta_unchecked(psi)), psi); }
+};
+struct SFormIntegrand {
+  const LaCurve* c;
+  std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
+};
+
+/// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
+template <class M>
+IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& m, Form form, double a, double b) {
+  if constexpr (LaClosedForm<M>) {
+    if (form == Form::s) return m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b));
+    return m.integrate_theta(c, a, b);
+  } else {
+    static_assert(QuadratureMethod<M>, "method must be a QuadratureMethod or an LaClosedForm");
+    if (form == Form::s) return m.integrate(SFormIntegrand{&c}, a, b);
+    return m.integrate(ThetaFormIntegrand{&c}, a, b);
+  }
+}
+
+inline void merge_status(PositionResult& r, Status s, const std::string& message) {
+  if (s != Status::ok && r.status == Status::ok) {
+    r.status = s;
+    r.message = message;
+  }
+}
+
+}  // namespace detail
+
+/// Position and frame at θ or s (t inside the domain; InputError otherwise).
+template <class M>
+PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& method, Form form = Form::automatic) {
+  method.validate();
+  PositionResult r;
+  r.point = c.frame_at(p, t);
+  r.form = resolve_form(c, 0.0, r.point.theta, form);
+  const double end = r.form == Form::s ? r.point.s : r.point.theta;
+  auto piece = detail::integrate_piece(c, method, r.form, 0.0, end);
+  r.point.position = piece.value;
+  r.error_estimate = piece.error_estimate;
+  r.evaluations = piece.evaluations;
+  detail::merge_status(r, piece.status, piece.message);
+  return r;
+}
+
+/// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). The
+/// positions are running integrals from the reference point, piece by piece.
+template <class M>
+std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
+                                     Form form = Form::automatic) {
+  method.validate();
+  if (n < 2) throw_input_error("polyline", "points", n, "[2, inf)");
+  std::vector<PositionResult> out(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double t = k + 1 == n ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);
+    out[static_cast<size_t>(k)].point = c.frame_at(p, t);
+  }
+  const Form used = resolve_form(c, std::min({0.0, out.front().point.theta, out.back().point.theta}),
+                                 std::max({0.0, out.front().point.theta, out.back().point.theta}), form);
+  auto var = [&](const CurvePoint& q) { return used == Form::s ? q.s : q.theta; };
+  double prev = 0.0;
+  std::complex<double> pos{};
+  PositionResult acc;
+  for (auto& r : out) {
+    auto piece = detail::integrate_piece(c, method, used, prev, var(r.point));
+    pos += piece.value;
+    acc.error_estimate += piece.error_estimate;
+    acc.evaluations += piece.evaluations;
+    detail::merge_status(acc, piece.status, piece.message);
+    prev = var(r.point);
+    r.point.position = pos;
+    r.error_estimate = acc.error_estimate;
+    r.evaluations = acc.evaluations;
+    r.status = acc.status;
+    r.message = acc.message;
+    r.form = used;
+  }
+  return out;
+}
+
+}  // namespace lac

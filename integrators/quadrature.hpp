@@ -1,0 +1,215 @@
+#pragma once
+// Quadrature methods for integrands t -> V (V = double or std::complex<double>):
+//   Rk4          classical RK4 with fixed step h applied to y' = f(t), as 002 uses it;
+//   Rk45         adaptive Dormand–Prince 5(4) on y' = f(t);
+//   GaussKronrod Boost.Math adaptive Gauss–Kronrod (G10K21).
+// Each satisfies QuadratureMethod and returns an IntegralResult with value, error
+// estimate, evaluation count and status. `integrate_cumulative` gives the running
+// integral at sample points (for polylines).
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <complex>
+#include <concepts>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/status.hpp"
+#include "integrators/ode.hpp"
+
+namespace lac {
+
+template <class V>
+struct IntegralResult {
+  V value{};
+  double error_estimate = 0;  ///< estimate of |value - exact| (absolute)
+  long evaluations = 0;       ///< integrand calls
+  Status status = Status::ok;
+  std::string message;        ///< empty when status is ok
+};
+
+template <class F>
+concept Integrand = std::invocable<F&, double> && requires(F& f, double t) {
+  { std::abs(f(t)) } -> std::convertible_to<double>;
+};
+
+template <class F>
+using IntegrandValue = std::decay_t<std::invoke_result_t<F&, double>>;
+
+/// Wraps an integrand and counts its calls (callable as const, as Boost.Math requires).
+template <class F>
+struct CountingIntegrand {
+  F* f;
+  long* count;
+  auto operator()(double t) const {
+    ++*count;
+    return (*f)(t);
+  }
+};
+
+/// Classical RK4 with fixed step on y' = f(t). For an integrand that does not depend on y,
+/// k2 = k3 = f(t + h/2) and k4 of one step is k1 of the next, so a step costs two new
+/// evaluations (the result equals composite Simpson). The step is h adjusted down so that
+/// an integer number n = ceil(|b - a| / h) of steps spans [a, b]. Error estimate: Richardson
+/// |S_h - S_2h| / 15 from the same nodes (S_2h uses every other node), plus a rounding term.
+struct Rk4 {
+  static constexpr std::string_view name = "rk4";
+  double h = 1e-3;  ///< step in the integration variable (002 uses 0.1, 0.01, 0.001)
+  long max_steps = 100'000'000;
+
+  void validate() const {
+    if (!(h > 0) || !std::isfinite(h)) throw_input_error("rk4", "h", h, "(0, inf)");
+  }
+
+  template <Integrand F>
+  IntegralResult<IntegrandValue<F>> integrate(F&& f, double a, double b) const {
+    using V = IntegrandValue<F>;
+    validate();
+    IntegralResult<V> r;
+    const double span = b - a;
+    if (span == 0) return r;
+    const double n_real = std::ceil(std::abs(span) / h);
+    if (!(n_real <= static_cast<double>(max_steps))) {
+      throw_input_error("rk4", "h", h, "at least |b - a| / max_steps (" + format_number(std::abs(span) / max_steps) + ")");
+    }
+    const long n = std::max(1L, static_cast<long>(n_real));
+    const double step = span / static_cast<double>(n);
+    V fine{}, coarse{};
+    double l1 = 0;
+    V f_left = f(a), f_pair_left = f_left;
+    long evals = 1;
+    for (long j = 0; j < n; ++j) {
+      const double t = a + static_cast<double>(j) * step;
+      const double t_next = (j + 1 == n) ? b : a + static_cast<double>(j + 1) * step;
+      const V f_mid = f(t + 0.5 * step);
+      const V f_right = f(t_next);
+      evals += 2;
+      fine += (step / 6.0) * (f_left + 4.0 * f_mid + f_right);
+      l1 += std::abs(step) / 6.0 * (std::abs(f_left) + 4.0 * std::abs(f_mid) + std::abs(f_right));
+      if (j % 2 == 1) coarse += (2.0 * step / 6.0) * (f_pair_left + 4.0 * f_left + f_right);
+      if (j % 2 == 1) f_pair_left = f_right;
+      f_left = f_right;
+    }
+    r.value = fine;
+    r.evaluations = evals;
+    const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * l1 * std::sqrt(static_cast<double>(n));
+    if (n >= 2) {
+      const long paired = n - n % 2;
+      const V fine_paired = n % 2 ? fine - (step / 6.0) * (f_pair_left + 4.0 * f(b - 0.5 * step) + f_left) : fine;
+      if (n % 2) ++r.evaluations;
+      r.error_estimate = std::abs(fine_paired - coarse) / 15.0 * static_cast<double>(n) / static_cast<double>(paired);
+    } else {  // one step: Simpson minus trapezoid, a pessimistic bound
+      r.error_estimate = std::abs(fine - (step / 2.0) * (f(a) + f_left));
+      ++r.evaluations;
+    }
+    r.error_estimate += rounding;
+    if (!std::isfinite(std::abs(r.value))) {
+      r.status = Status::numerical_failure;
+      r.message = "rk4: non-finite integrand value";
+    }
+    return r;
+  }
+};
+
+/// Adaptive Dormand–Prince 5(4) applied to y' = f(t). `tol` sets rtol and atol together;
+/// atol is measured in the units of the integral (for a standard-form LA curve, ρ(0) = 1).
+struct Rk45 {
+  static constexpr std::string_view name = "rk45";
+  double rtol = 1e-12;
+  double atol = 1e-12;
+  long max_steps = 1'000'000;
+
+  void validate() const { options().validate("rk45"); }
+  AdaptiveOptions options() const {
+    AdaptiveOptions o;
+    o.rtol = rtol;
+    o.atol = atol;
+    o.max_steps = max_steps;
+    return o;
+  }
+
+  template <Integrand F>
+  IntegralResult<IntegrandValue<F>> integrate(F&& f, double a, double b) const {
+    using V = IntegrandValue<F>;
+    auto rhs = [&f](double t, const V&) -> V { return f(t); };
+    auto o = DormandPrince45<V>::integrate(rhs, V{}, a, b, options(), NoObserver{});
+    IntegralResult<V> r;
+    r.value = o.state;
+    r.error_estimate = o.error_estimate;
+    r.evaluations = o.evaluations;
+    r.status = o.status;
+    if (o.status != Status::ok) r.message = std::string("rk45: ") + std::string(to_string(o.status));
+    return r;
+  }
+};
+
+/// Boost.Math adaptive Gauss–Kronrod (21-point Kronrod, 10-point Gauss). Recursion stops when
+/// the Kronrod–Gauss difference is below tol × |integral| on each piece or max_depth is reached.
+struct GaussKronrod {
+  static constexpr std::string_view name = "gauss-kronrod";
+  double tol = 1e-14;
+  unsigned max_depth = 15;
+
+  void validate() const {
+    if (!(tol >= 1e-16) || !std::isfinite(tol)) throw_input_error("gauss-kronrod", "tol", tol, "[1e-16, inf)");
+    if (max_depth < 1 || max_depth > 30) throw_input_error("gauss-kronrod", "max_depth", max_depth, "[1, 30]");
+  }
+
+  template <Integrand F>
+  IntegralResult<IntegrandValue<F>> integrate(F&& f, double a, double b) const {
+    using V = IntegrandValue<F>;
+    validate();
+    IntegralResult<V> r;
+    if (a == b) return r;
+    long count = 0;
+    CountingIntegrand<std::remove_reference_t<F>> counted{&f, &count};
+    double err = 0, l1 = 0;
+    r.value = boost::math::quadrature::gauss_kronrod<double, 21>::integrate(counted, a, b, max_depth, tol, &err, &l1);
+    r.error_estimate = err;
+    r.evaluations = count;
+    if (!std::isfinite(std::abs(r.value))) {
+      r.status = Status::numerical_failure;
+      r.message = "gauss-kronrod: non-finite integrand value";
+    } else if (err > tol * std::abs(r.value) && err > 1e3 * std::numeric_limits<double>::epsilon() * l1) {
+      r.status = Status::tolerance_not_met;
+      r.message = "gauss-kronrod: error estimate " + format_number(err) + " above tolerance at max_depth";
+    }
+    return r;
+  }
+};
+
+template <class M>
+concept QuadratureMethod = requires(const M& m, double (*f)(double)) {
+  { m.integrate(f, 0.0, 1.0) } -> std::same_as<IntegralResult<double>>;
+  { m.validate() };
+  { M::name } -> std::convertible_to<std::string_view>;
+};
+
+/// Running integral ∫_{ts[0]}^{ts[k]} f for every k, piece by piece; counts and error
+/// estimates accumulate. ts must be monotonic (either direction).
+template <QuadratureMethod M, Integrand F>
+std::vector<IntegralResult<IntegrandValue<F>>> integrate_cumulative(const M& method, F&& f, std::span<const double> ts) {
+  using V = IntegrandValue<F>;
+  std::vector<IntegralResult<V>> out(ts.size());
+  for (size_t k = 1; k < ts.size(); ++k) {
+    IntegralResult<V> piece = method.integrate(f, ts[k - 1], ts[k]);
+    out[k] = out[k - 1];
+    out[k].value += piece.value;
+    out[k].error_estimate += piece.error_estimate;
+    out[k].evaluations = piece.evaluations;  // per piece; callers sum if they need totals
+    if (piece.status != Status::ok) {
+      out[k].status = piece.status;
+      out[k].message = piece.message;
+    }
+  }
+  return out;
+}
+
+static_assert(QuadratureMethod<Rk4>);
+static_assert(QuadratureMethod<Rk45>);
+static_assert(QuadratureMethod<GaussKronrod>);
+
+}  // namespace lac
