@@ -51,8 +51,9 @@ inline void require_finite(std::string_view function, std::string_view parameter
 
 /// Half-open or open interval text for messages, e.g. "(-inf, 2.5)".
 inline std::string interval_text(double lo, double hi, bool lo_closed = false, bool hi_closed = false) {
-  return std::string(lo_closed ? "[" : "(") + format_number(lo) + ", " + format_number(hi) +
-         (hi_closed ? "]" : ")");
+  std::string text(lo_closed ? "[" : "(");
+  text.append(format_number(lo)).append(", ").append(format_number(hi)).append(hi_closed ? "]" : ")");
+  return text;
 }
 
 }  // namespace lac

@@ -1,0 +1,242 @@
+// Planar LA curve: closed forms, positions against the mpmath reference table
+// (tests/reference/la_reference.csv), and rejection of invalid input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "curves/planar/la_integrator.hpp"
+#include "curves/planar/la_position.hpp"
+#include "tests/support/reference_csv.hpp"
+
+namespace lac {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Documented accuracy of each integrator at its default setting, relative to |C|, on the whole
+// reference table (auto form). These are the numbers README.md and results/ quote.
+struct Tolerance {
+  const char* integrator;
+  IntegratorOptions options;
+  double max_relative_error;
+};
+const Tolerance kTolerances[] = {
+    {"gauss-kronrod", {}, 1e-13},
+    {"rk45", {.h = {}, .tol = 1e-12}, 1e-10},
+};
+
+struct ReferenceCase {
+  double alpha, lambda, theta, s, rho;
+  std::complex<double> c;
+};
+
+std::vector<ReferenceCase> reference_cases() {
+  static const std::vector<ReferenceCase> cases = [] {
+    auto t = test::read_reference_csv("la_reference.csv");
+    std::vector<ReferenceCase> v;
+    for (size_t i = 0; i < t.rows.size(); ++i)
+      v.push_back({t.number(i, "alpha"), t.number(i, "lambda"), t.number(i, "theta"), t.number(i, "s"),
+                   t.number(i, "rho"), {t.number(i, "x"), t.number(i, "y")}});
+    return v;
+  }();
+  return cases;
+}
+
+std::string describe_case(const ReferenceCase& rc) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "alpha=%.6g lambda=%.3g theta=%.8g", rc.alpha, rc.lambda, rc.theta);
+  return buf;
+}
+
+TEST(LaReference, TableSpansTheDomain) {
+  const auto cases = reference_cases();
+  ASSERT_GE(cases.size(), 200u);
+  auto has = [&](auto pred) { return std::any_of(cases.begin(), cases.end(), pred); };
+  EXPECT_TRUE(has([](auto& c) { return c.alpha == 0; }));
+  EXPECT_TRUE(has([](auto& c) { return c.alpha == 1; }));
+  EXPECT_TRUE(has([](auto& c) { return c.alpha <= -100; }));
+  EXPECT_TRUE(has([](auto& c) { return c.alpha >= 100; }));
+  EXPECT_TRUE(has([](auto& c) { return c.theta < 0; }));
+  EXPECT_TRUE(has([](auto& c) { return c.lambda <= 1e-3; }));
+  EXPECT_TRUE(has([](auto& c) { return c.lambda >= 100; }));
+}
+
+// s and ρ from the closed forms against the 40-digit values, allowing for the rounding of the
+// input θ to double: tolerance 4 ε (1 + condition number of the map θ → s or θ → ρ).
+TEST(LaClosedForms, MatchReferenceToAFewUlp) {
+  double worst = 0;
+  std::string worst_case;
+  for (const auto& rc : reference_cases()) {
+    const LaCurve c(rc.alpha, rc.lambda);
+    const double s = c.s_at_theta(rc.theta);
+    const double rho = c.rho_at_theta(rc.theta);
+    const double cond_s = std::abs(rc.theta * rc.rho / rc.s);
+    const double cond_rho = std::abs(rc.theta * rc.lambda * std::pow(rc.rho, rc.alpha - 1.0));
+    const double es = std::abs(s - rc.s) / std::abs(rc.s) / (kEps * (1 + cond_s));
+    const double er = std::abs(rho - rc.rho) / rc.rho / (kEps * (1 + cond_rho));
+    EXPECT_LE(es, 4.0) << describe_case(rc) << " s=" << s << " ref " << rc.s;
+    EXPECT_LE(er, 4.0) << describe_case(rc) << " rho=" << rho << " ref " << rc.rho;
+    if (std::max(es, er) > worst) {
+      worst = std::max(es, er);
+      worst_case = describe_case(rc);
+    }
+  }
+  std::printf("closed forms: worst %.2f eps*(1+cond) at %s\n", worst, worst_case.c_str());
+}
+
+TEST(LaClosedForms, RoundTripsAndDerivativeIdentity) {
+  for (const auto& rc : reference_cases()) {
+    const LaCurve c(rc.alpha, rc.lambda);
+    const double s = c.s_at_theta(rc.theta);
+    if (!c.s_domain().contains(s)) continue;  // s rounded onto an open end
+    const double theta_back = c.theta_at_s(s);
+    const double cond = std::abs(s / (rc.theta * rc.rho));  // d log θ / d log s
+    EXPECT_LE(std::abs(theta_back - rc.theta), 8 * kEps * std::abs(rc.theta) * (1 + cond) * (1 + 1 / std::max(cond, 1e-300)))
+        << describe_case(rc);
+    if (rc.lambda > 0 && std::abs(std::log(rc.rho)) > 1e-3) {
+      const double th_from_rho = c.theta_at_log_rho(c.log_rho_at_theta(rc.theta));
+      EXPECT_NEAR(th_from_rho, rc.theta, 16 * kEps * std::abs(rc.theta) * (1 + cond)) << describe_case(rc);
+    }
+    // ds/dθ = ρ by a Richardson-extrapolated central difference (accuracy ~1e-10 relative).
+    const Interval d = c.theta_domain();
+    const double h = 1e-3 * std::min({1.0, std::abs(rc.theta) + 1e-3, (d.hi - rc.theta) / 4, (rc.theta - d.lo) / 4});
+    auto ds = [&](double step) { return (c.s_at_theta(rc.theta + step) - c.s_at_theta(rc.theta - step)) / (2 * step); };
+    const double derivative = (4 * ds(h / 2) - ds(h)) / 3;
+    EXPECT_NEAR(derivative / rc.rho, 1.0, 1e-7) << describe_case(rc);
+  }
+}
+
+TEST(LaClosedForms, CircleWhenLambdaIsZero) {
+  const LaCurve c(2.5, 0.0);
+  for (double t : {-7.0, -1.0, 0.5, 3.0, 40.0}) {
+    EXPECT_EQ(c.rho_at_theta(t), 1.0);
+    EXPECT_EQ(c.s_at_theta(t), t);
+    EXPECT_EQ(c.theta_at_s(t), t);
+    auto r = position_at(c, Parameter::theta, t, GaussKronrod{});
+    EXPECT_NEAR(std::abs(r.point.position - std::complex<double>(std::sin(t), 1 - std::cos(t))), 0.0, 1e-13 * (1 + std::abs(t)));
+  }
+}
+
+// Each integrator at its documented setting meets its documented accuracy on every case,
+// and its error estimate bounds the true error.
+TEST(LaPositions, IntegratorsMeetDocumentedAccuracy) {
+  for (const auto& tol : kTolerances) {
+    const LaIntegrator method = make_la_integrator(tol.integrator, tol.options);
+    double worst = 0, worst_ratio_est = 1e300;
+    std::string worst_case;
+    int under_estimated = 0;
+    for (const auto& rc : reference_cases()) {
+      const LaCurve c(rc.alpha, rc.lambda);
+      const auto r = position_at(c, Parameter::theta, rc.theta, method);
+      ASSERT_TRUE(usable(r.status)) << tol.integrator << " " << describe_case(rc) << ": " << r.message;
+      const double err = std::abs(r.point.position - rc.c);
+      const double rel = err / std::abs(rc.c);
+      EXPECT_LE(rel, tol.max_relative_error) << tol.integrator << " " << describe_case(rc) << " form "
+                                             << to_string(r.form) << " evals " << r.evaluations;
+      if (err > 8 * kEps * std::abs(rc.c) && r.error_estimate < err) ++under_estimated;
+      if (rel > worst) {
+        worst = rel;
+        worst_case = describe_case(rc);
+      }
+      if (err > 0) worst_ratio_est = std::min(worst_ratio_est, r.error_estimate / err);
+    }
+    EXPECT_EQ(under_estimated, 0) << tol.integrator << ": error estimate below the true error (above rounding level)";
+    std::printf("%s: worst relative error %.3g at %s; min estimate/true error %.3g\n", tol.integrator, worst,
+                worst_case.c_str(), worst_ratio_est);
+  }
+}
+
+TEST(LaPositions, FormsAgreeWhereBothAreSmooth) {
+  const LaCurve c(-1.0, 1.0);  // clothoid
+  for (double t : {0.1, 0.3, 0.45}) {
+    auto a = position_at(c, Parameter::theta, t, GaussKronrod{}, Form::theta);
+    auto b = position_at(c, Parameter::theta, t, GaussKronrod{}, Form::s);
+    EXPECT_EQ(a.form, Form::theta);
+    EXPECT_EQ(b.form, Form::s);
+    EXPECT_LT(std::abs(a.point.position - b.point.position), 1e-14);
+  }
+}
+
+TEST(LaPositions, PolylineIsUniformAndCumulative) {
+  const LaCurve c(2.0, 1.0);
+  auto pts = polyline(c, Parameter::s, 0.0, 1.5, 31, GaussKronrod{});
+  ASSERT_EQ(pts.size(), 31u);
+  EXPECT_EQ(pts.front().point.s, 0.0);
+  EXPECT_EQ(pts.back().point.s, 1.5);
+  for (size_t k = 1; k < pts.size(); ++k) EXPECT_NEAR(pts[k].point.s - pts[k - 1].point.s, 0.05, 1e-15);
+  auto end = position_at(c, Parameter::s, 1.5, GaussKronrod{});
+  EXPECT_LT(std::abs(pts.back().point.position - end.point.position), 1e-14);
+  EXPECT_GE(pts.back().evaluations, pts[1].evaluations);
+}
+
+// RK4's observed order is 4 where the integrand is smooth (002's rows, θ ∈ [0, 1]).
+TEST(LaPositions, Rk4ObservedOrderIsFour) {
+  for (double alpha : {2.0, 4.0 / 3.0, -1.0}) {
+    const LaCurve c(alpha, 1.0);
+    const auto exact = position_at(c, Parameter::theta, 0.4, GaussKronrod{}).point.position;
+    double prev = 0;
+    for (double h : {0.04, 0.02, 0.01}) {
+      const double err = std::abs(position_at(c, Parameter::theta, 0.4, Rk4{.h = h}, Form::theta).point.position - exact);
+      if (prev > 0) {
+        EXPECT_NEAR(std::log2(prev / err), 4.0, 0.15) << "alpha " << alpha << " h " << h;
+      }
+      prev = err;
+    }
+  }
+}
+
+// ---- invalid input -------------------------------------------------------------------------
+
+template <class Fn>
+void expect_input_error(Fn&& fn, const std::string& parameter, const std::string& range_text) {
+  try {
+    fn();
+    ADD_FAILURE() << "no InputError for " << parameter;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.parameter(), parameter) << e.what();
+    EXPECT_NE(std::string(e.what()).find(range_text), std::string::npos) << e.what();
+  }
+}
+
+TEST(LaInvalidInput, ParametersOutsideTheirRanges) {
+  const double nan = std::nan("");
+  expect_input_error([] { LaCurve(1.0, -0.5); }, "lambda", "[0, inf)");
+  expect_input_error([&] { LaCurve(1.0, nan); }, "lambda", "[0, inf)");
+  expect_input_error([&] { LaCurve(nan, 1.0); }, "alpha", "finite");
+  expect_input_error([] { LaCurve(std::numeric_limits<double>::infinity(), 1.0); }, "alpha", "finite");
+  expect_input_error([] { LaCurve(0.5, 1.0).s_at_theta(2.0); }, "theta", "(-inf, 2)");
+  expect_input_error([] { LaCurve(3.0, 1.0).rho_at_theta(-0.5); }, "theta", "(-0.5, inf)");
+  expect_input_error([] { LaCurve(-1.0, 2.0).theta_at_s(0.5); }, "s", "(-inf, 0.5)");
+  expect_input_error([] { LaCurve(2.0, 1.0).theta_at_s(-0.5); }, "s", "(-0.5, inf)");
+  expect_input_error([&] { LaCurve(2.0, 1.0).theta_at_s(nan); }, "s", "(-0.5, inf)");
+  expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 1, GaussKronrod{}); }, "points", "[2, inf)");
+  expect_input_error([] { position_at(LaCurve(0.5, 1.0), Parameter::theta, 5.0, GaussKronrod{}); }, "theta", "(-inf, 2)");
+  // ρ overflows although θ is inside the domain: an error, never inf/NaN.
+  expect_input_error([] { LaCurve(1.0, 1.0).frame_at(Parameter::theta, 800.0); }, "theta", "representable");
+  expect_input_error([] { parse_form("arc"); }, "form", "theta, s, auto");
+  expect_input_error([] { make_la_integrator("euler"); }, "integrator", "valid:");
+}
+
+TEST(LaInvalidInput, NoNanAtTheEdgesOfTheDomain) {
+  for (double alpha : {-100.0, -1.0, 0.0, 0.5, 0.99, 1.0, 1.01, 2.0, 100.0}) {
+    const LaCurve c(alpha, 10.0);
+    const Interval d = c.theta_domain();
+    for (double t : {std::nextafter(d.hi, 0.0), std::nextafter(d.lo, 0.0), 1e3, -1e3}) {
+      if (!d.contains(t)) continue;
+      try {
+        const CurvePoint p = c.frame_at(Parameter::theta, t);
+        EXPECT_TRUE(std::isfinite(p.s) && std::isfinite(p.rho) && p.rho > 0 && std::isfinite(p.kappa)) << alpha << " " << t;
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.parameter(), "theta");
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lac
