@@ -1,0 +1,94 @@
+#pragma once
+// Quadratic log-aesthetic curve (003; MATH.md §4 corrects its Eqs. 4.2 and 4.6): the LCG is
+// the parabola log(ρ ds/dρ) = γ(log ρ)² + α log ρ − log Λ. In u = log κ (standard form:
+// κ = 1, θ = 0, position 0 at s = 0; κ decreases with s):
+//   ds/du = −e^(E(u))/Λ,  E(u) = γu² − αu,     s(u) = −F_α(u)/Λ,
+//   dθ/du = κ ds/du,                             θ(u) = −F_(α−1)(u)/Λ,
+// with F_a(u) = ∫₀^u e^(γt² − a t) dt evaluated in scaled form (Dawson for γ > 0, erfcx for
+// γ < 0, the LA curve for γ = 0; detail/exp_quadratic_integral.hpp). No |z| ≤ 5 / ≤ 26 limit
+// and no overflow of e^(∓α²/(4γ)) remains; the only limit is a true one: an arc-length bound
+// beyond the double range (|α|/(2√−γ) > 26.6) is reported as ±inf.
+//
+// Domain: s ∈ (s(κ→∞), s(κ→0)). γ < 0 has both ends finite (003 property 3); γ = 0 is the LA
+// curve of MATH.md §1; γ > 0 is unbounded both ways. At a finite s(κ→0) the curvature reaches
+// 0 (inflection). With QuadraticOptions::through_inflection the curve continues past it
+// point-symmetrically (κ(s_i + t) = −κ(s_i − t), signed curvature, the LCG of |κ| is the
+// same parabola) up to 2 s_i − s(κ→∞); otherwise s(κ→0) is an open end.
+#include <string_view>
+
+#include "common/status.hpp"
+#include "curves/planar/la_curve.hpp"
+#include "curves/quadratic/detail/exp_quadratic_integral.hpp"
+#include "special/erf_family.hpp"
+
+namespace lac {
+
+struct QuadraticOptions {
+  /// erfi⁻¹ / erf⁻¹ used by κ(s): ours (default; scaled, polished, whole range) or 003's
+  /// hybrid bisection–Newton (unscaled, |z| ≤ 26 / ≤ 5, no polishing; for comparison).
+  special::ErfInverseMethod inverse = special::ErfInverseMethod::ours;
+  /// Continue past κ = 0 by point symmetry (signed curvature). Default false: open end.
+  bool through_inflection = false;
+  /// Cap on the polishing iterations of κ(s) (default 60; typically 1–2 are used).
+  int max_iterations = 60;
+  void validate() const;
+};
+
+/// κ(s) with its provenance.
+struct KappaSolution {
+  double log_kappa = 0;   ///< u = log|κ|
+  double kappa = 1;       ///< signed curvature (negative past the inflection)
+  int iterations = 0;     ///< inverse-function + polishing iterations
+  Status status = Status::ok;
+};
+
+class QuadraticLaCurve {
+ public:
+  /// α, γ finite, Λ > 0 finite; InputError otherwise (Λ = 0 would be a circle, which has no
+  /// κ(s) to invert).
+  QuadraticLaCurve(double alpha, double gamma, double lambda, QuadraticOptions options = {});
+
+  double alpha() const { return alpha_; }
+  double gamma() const { return gamma_; }
+  double lambda() const { return lambda_; }
+  const QuadraticOptions& options() const { return options_; }
+
+  /// Arc length at κ → ∞ (lower end) and at κ → 0 (upper end), MATH.md §4 (erfcx forms).
+  double s_at_infinite_kappa() const { return s_lo_; }
+  double s_at_zero_kappa() const { return s_hi_; }
+  /// Open s domain of the curve (extended past the inflection when the option is on).
+  Interval s_domain() const;
+  bool has_inflection() const;  ///< s(κ→0) finite
+  /// θ at κ → 0 (finite when has_inflection()).
+  double theta_at_zero_kappa() const { return theta_hi_; }
+
+  /// Closed forms in u = log κ (any finite u; ±inf only past the double range).
+  double s_at_log_kappa(double u) const { return -s_integral_(u) / lambda_; }
+  double theta_at_log_kappa(double u) const { return -theta_integral_(u) / lambda_; }
+  /// s(κ), κ > 0.
+  double s_at_kappa(double kappa) const;
+  /// ds/dκ = −κ^(−α + γ log κ − 1)/Λ (MATH.md §4), κ > 0.
+  double ds_dkappa(double kappa) const;
+  /// The LCG parabola: log(ρ ds/dρ) = γ(log ρ)² + α log ρ − log Λ.
+  double lcg(double log_rho) const;
+
+  /// κ(s) for s in s_domain() (InputError otherwise), with iterations and status.
+  KappaSolution solve_kappa(double s) const;
+  double kappa_at_s(double s) const { return solve_kappa(s).kappa; }
+  double theta_at_s(double s) const;
+
+  /// s, θ, κ (signed), ρ = 1/κ (±inf at the inflection); position left 0 (see quadratic_position.hpp).
+  CurvePoint frame_at(double s) const;
+
+  /// Throws InputError naming `name` unless s is in s_domain() (the inflection point itself is
+  /// allowed when through_inflection is on).
+  void check_s(double s, const char* name) const;
+
+ private:
+  double alpha_, gamma_, lambda_;
+  QuadraticOptions options_;
+  detail::ExpQuadraticIntegral s_integral_, theta_integral_;
+  double s_lo_, s_hi_, theta_hi_;
+};
+
+}  // namespace lac

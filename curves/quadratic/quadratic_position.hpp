@@ -1,0 +1,76 @@
+#pragma once
+// Position on a quadratic LA curve by any quadrature method (template on QuadratureMethod),
+// or run-time by name (AnyQuadrature from integrators/registry.hpp). s-form:
+//   C(s) = ∫₀^s e^(iθ(t)) dt,  θ(t) from κ(t) (quadratic_curve.hpp),
+// whose integrand has modulus 1 and stays smooth through the inflection (MATH.md §1's reason
+// for the s-form). The tangent is (cos θ, sin θ) of the returned point.
+#include <complex>
+#include <vector>
+
+#include "curves/planar/la_position.hpp"
+#include "curves/quadratic/quadratic_curve.hpp"
+#include "integrators/quadrature.hpp"
+#include "integrators/registry.hpp"
+
+namespace lac {
+
+namespace detail {
+struct QuadraticSFormIntegrand {
+  const QuadraticLaCurve* curve;
+  std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
+};
+}  // namespace detail
+
+/// Position and frame at arc length s (inside s_domain(); InputError otherwise).
+template <QuadratureMethod M>
+PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method) {
+  method.validate();
+  PositionResult r;
+  r.point = c.frame_at(s);
+  r.form = Form::s;
+  auto piece = method.integrate(detail::QuadraticSFormIntegrand{&c}, 0.0, s);
+  r.point.position = piece.value;
+  r.error_estimate = piece.error_estimate;
+  r.evaluations = piece.evaluations;
+  detail::merge_status(r, piece.status, piece.message);
+  return r;
+}
+
+/// n ≥ 2 points uniform in s from s0 to s1 (both inside s_domain()). Positions are running
+/// integrals from the reference point s = 0 (first piece 0 → s0, then piece by piece).
+template <QuadratureMethod M>
+std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method) {
+  method.validate();
+  if (n < 2) throw_input_error("quadratic polyline", "points", n, "[2, inf)");
+  c.check_s(s0, "s_from");
+  c.check_s(s1, "s_to");
+  std::vector<PositionResult> out(static_cast<size_t>(n));
+  const detail::QuadraticSFormIntegrand f{&c};
+  double prev = 0.0;
+  std::complex<double> pos{};
+  PositionResult acc;
+  for (int k = 0; k < n; ++k) {
+    const double s = k + 1 == n ? s1 : s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n - 1);
+    auto& r = out[static_cast<size_t>(k)];
+    r.point = c.frame_at(s);
+    auto piece = method.integrate(f, prev, s);
+    pos += piece.value;
+    acc.error_estimate += piece.error_estimate;
+    acc.evaluations += piece.evaluations;
+    detail::merge_status(acc, piece.status, piece.message);
+    prev = s;
+    r.point.position = pos;
+    r.error_estimate = acc.error_estimate;
+    r.evaluations = acc.evaluations;
+    r.status = acc.status;
+    r.message = acc.message;
+    r.form = Form::s;
+  }
+  return out;
+}
+
+/// Run-time choice of the quadrature method (make_quadrature by name).
+PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
+std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
+
+}  // namespace lac
