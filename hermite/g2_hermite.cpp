@@ -1,6 +1,6 @@
 #include "hermite/g2_hermite.hpp"
 
-#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -17,22 +17,6 @@ double wrap_angle(double a) { return std::remainder(a, 2.0 * kPi); }  // (−π,
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// ∫ e^{iφ} over one segment with Boost tanh-sinh, split where q = 0: an evaluation
-// independent of the solvers' graded Gauss–Legendre rule.
-std::complex<double> verify_segment(const detail::LaLaw& law, const detail::LinearQSegment& seg) {
-  thread_local boost::math::quadrature::tanh_sinh<double> ts;  // integrate() is non-const
-  std::vector<double> cuts{seg.ua};
-  if (seg.qa * seg.qb < 0) cuts.push_back(seg.ua - seg.qa / seg.slope());
-  cuts.push_back(seg.ub);
-  std::complex<double> sum{};
-  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-    auto c = [&](double u) { return std::cos(seg.phi_at(law, u)); };
-    auto s = [&](double u) { return std::sin(seg.phi_at(law, u)); };
-    sum += std::complex<double>(ts.integrate(c, cuts[k], cuts[k + 1], 1e-15), ts.integrate(s, cuts[k], cuts[k + 1], 1e-15));
-  }
-  return sum;
 }
 
 }  // namespace
@@ -106,14 +90,21 @@ std::array<SegmentCoefficients, 3> TripleLaCurve::coefficients() const {
     c[i].S_begin = g.ua;
     c[i].S_end = g.ub;
     if (a == 0) {  // 004 Eqs. (3), (7): κ̃ = c0 e^(c1 S), φ = (c0/c1) e^(c1 S) + c2 (arc: c1 = 0)
-      c[i].c0 = law.sigma * std::exp(c1);
-      c[i].c1 = c0;
-      c[i].c2 = c0 == 0 ? g.phi_a - c[i].c0 * g.ua : g.phi_a - c[i].c0 / c0 * std::exp(c0 * g.ua);
+      const bool arc = std::abs(g.qb - g.qa) <= 1e-8;  // as below: Eq. (7) cancels near c1 = 0
+      c[i].c0 = law.sigma * std::exp(arc ? 0.5 * (g.qa + g.qb) : c1);
+      c[i].c1 = arc ? 0.0 : c0;
+      c[i].c2 = arc ? g.phi_a - c[i].c0 * g.ua : g.phi_a - c[i].c0 / c0 * std::exp(c0 * g.ua);
       continue;
     }
-    c[i].c0 = c0;
-    c[i].c1 = c1;
-    if (c0 == 0) {
+    // Near an arc the Eq. (5) form cancels (c2 ~ |q|^p / c0, Appendix A): below a relative
+    // change of q of sqrt(eps) ≈ 1e-8 over the segment the arc of Eq. (6), with q at the
+    // segment's middle, is the more accurate of the two (both err by ≲ 1e-8 there).
+    const bool arc = std::abs(g.qb - g.qa) <= 1e-8 * std::max(std::abs(g.qa), std::abs(g.qb));
+    c[i].c0 = arc ? 0.0 : c0;
+    c[i].c1 = arc ? 0.5 * (g.qa + g.qb) : c1;
+    if (arc) {
+      c[i].c2 = g.phi_a - law.kappa_of_q(c[i].c1) * g.ua;  // 004 Eq. (6)
+    } else if (c0 == 0) {
       c[i].c2 = g.phi_a - law.kappa_of_q(c1) * g.ua;  // 004 Eq. (6)
     } else if (a == 1) {
       c[i].c2 = g.phi_a - std::log(std::abs(g.qa)) / c0;  // 004 Eq. (8)
@@ -161,6 +152,14 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     return res;
   }
 
+  if (pr.alpha >= 0 && !(p.law.sigma * (p.phi_e - p.phi_s) > 0)) {
+    res.status = Status::no_solution;
+    res.message = "for alpha >= 0 the curvature keeps the sign of kappa0, so the turning theta1 - theta0 (measured "
+                  "from the chord, in (-pi, pi]) must have that sign too";
+    res.seconds = seconds_since(t_begin);
+    return res;
+  }
+
   auto run = [&](G2Start start) {
     const auto t0 = std::chrono::steady_clock::now();
     const detail::StartEstimate e = start == G2Start::fast ? detail::fast_start(p) : detail::bezier_grid_start(p, pr.alpha);
@@ -196,7 +195,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   // Residuals in the user's frame.
   std::complex<double> sum{};
   if (o.verify) {
-    for (const auto& seg : res.curve.segments) sum += verify_segment(p.law, seg);
+    for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent_reference(p.law, seg);
   } else {
     for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent(p.law, seg, res.evaluations);
   }

@@ -1,6 +1,8 @@
 #include "hermite/detail/linear_q.hpp"
 
 #include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <vector>
 
 namespace lac::hermite::detail {
 namespace {
@@ -70,6 +72,20 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& s
     }
   }
   return graded(phi, ua, ub, 0.0, 1, evaluations);
+}
+
+std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg) {
+  thread_local boost::math::quadrature::tanh_sinh<double> ts;  // integrate() is non-const
+  std::vector<double> cuts{seg.ua};
+  if (seg.qa * seg.qb < 0) cuts.push_back(seg.ua - seg.qa / seg.slope());
+  cuts.push_back(seg.ub);
+  std::complex<double> sum{};
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    auto c = [&](double u) { return std::cos(seg.phi_at(law, u)); };
+    auto s = [&](double u) { return std::sin(seg.phi_at(law, u)); };
+    sum += std::complex<double>(ts.integrate(c, cuts[k], cuts[k + 1], 1e-15), ts.integrate(s, cuts[k], cuts[k + 1], 1e-15));
+  }
+  return sum;
 }
 
 }  // namespace lac::hermite::detail

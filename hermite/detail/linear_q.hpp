@@ -90,4 +90,8 @@ const std::array<double, 20>& gl_weights();
 /// `evaluations` is incremented by the number of integrand calls.
 std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations);
 
+/// The same integral by Boost tanh-sinh (tolerance 1e-15) in the original variable, split
+/// where q = 0: an independent evaluation for residual checks (slower).
+std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg);
+
 }  // namespace lac::hermite::detail
