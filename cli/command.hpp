@@ -11,6 +11,10 @@ namespace lac::cli {
 
 using CommandSetup = void (*)(CLI::App& app);
 
+/// Runs the command line: 0 on success, 2 on invalid input (one line on stderr naming the
+/// parameter), 1 on an internal error. Used by main() and by the fuzz targets.
+int run(int argc, char** argv);
+
 std::vector<CommandSetup>& command_registry();
 
 struct CommandRegistrar {

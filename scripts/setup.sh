@@ -9,6 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev         # CLI parsing, JSON output
   libtbb-dev                              # parallel sweeps
   libgtest-dev libbenchmark-dev           # tests, benchmarks
+  clang libclang-rt-14-dev                # libFuzzer targets and sanitizer runtimes
   python3 python3-mpmath python3-numpy python3-matplotlib  # reference generators, figures
 )
 missing=()
