@@ -162,11 +162,22 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   g.segment0_at_a0 = !c.swapped;
 
   // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
+  // The trial with the smallest |f| is kept: the root finders return that point, so the
+  // solution curve need not be drawn again.
+  Trial best;
+  double best_u = -1, best_f = std::numeric_limits<double>::infinity();
   auto mismatch = [&](double u) {
-    const Trial t = draw(p, p.lambda_of(u), method);
+    Trial t = draw(p, p.lambda_of(u), method);
     ++g.trials;
     g.evaluations += t.evaluations;
-    return t.valid ? t.phi - c.target : std::numeric_limits<double>::quiet_NaN();
+    if (!t.valid) return std::numeric_limits<double>::quiet_NaN();
+    const double f = t.phi - c.target;
+    if (std::abs(f) < best_f) {
+      best_f = std::abs(f);
+      best_u = u;
+      best = std::move(t);
+    }
+    return f;
   };
   const double f0 = 0.5 * c.turning - c.target;  // ≤ 0 after the swap
   double u_root = 0;
@@ -212,9 +223,14 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
     g.residual = f0;
   }
 
-  Trial t = draw(p, p.lambda_of(u_root), method);
-  ++g.trials;
-  g.evaluations += t.evaluations;
+  Trial t;
+  if (best_u == u_root && best.valid) {
+    t = std::move(best);
+  } else {
+    t = draw(p, p.lambda_of(u_root), method);
+    ++g.trials;
+    g.evaluations += t.evaluations;
+  }
   if (!t.valid) {
     g.status = Status::numerical_failure;
     g.message = std::string(fn) + ": the solution curve is not representable in double precision";
