@@ -191,7 +191,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     res.inflection_s = res.reversed ? res.length - s0 : s0;
   }
   // Residuals with the independent tanh-sinh evaluation.
-  std::complex<double> z = detail::integrate_tangent_reference(res.law, res.standard);
+  std::complex<double> z = o.verify ? detail::integrate_tangent_reference(res.law, res.standard) : end;
   if (res.mirrored) z = std::conj(z);
   res.residual_position = std::abs(res.origin + res.rotation * res.scale * z - B);
   res.residual_angle = std::max(std::abs(wrap_angle(res.at(0).theta - std::arg(P[1] - P[0]))),

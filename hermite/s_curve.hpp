@@ -31,6 +31,9 @@ struct SCurveOptions {
   RootMethod root = RootMethod::toms748;  ///< 004 uses bisection
   int max_iterations = 200;               ///< root-finder iterations on Λ
   int bracket_doublings = 200;            ///< growth steps of Λ's upper end when it is unbounded
+  /// Residuals from an independent tanh-sinh evaluation of the end point; without it they
+  /// come from the search's own Gauss–Legendre rule.
+  bool verify = true;
   void validate() const;
 };
 

@@ -2,6 +2,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
 #include <vector>
 
 namespace lac::hermite::detail {
@@ -25,15 +26,17 @@ const GaussLegendre01& rule() {
   return r;
 }
 
-constexpr int kPanels = 2;  // equal panels per piece (checked against tanh-sinh in tests)
-
 // ∫_{t0}^{1} f(u(t)) u'(t) dt with u(t) = u0 + (e − u0)·t^p (p = 1: plain, p = 4: graded).
 template <class Phi>
-std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int p, long& evaluations) {
+std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int p, int panels, long& evaluations) {
   const GaussLegendre01& g = rule();
   std::complex<double> sum{};
-  const double span = (1.0 - t0) / kPanels;
-  for (int panel = 0; panel < kPanels; ++panel) {
+  // κ keeps its sign on a piece, so φ is monotonic there: one more panel per radian of turning.
+  const double t0p = std::pow(t0, p);
+  const double turning = std::abs(phi(u0 + (e - u0)) - phi(u0 + (e - u0) * t0p));
+  panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
+  const double span = (1.0 - t0) / panels;
+  for (int panel = 0; panel < panels; ++panel) {
     const double a = t0 + panel * span;
     for (size_t k = 0; k < 20; ++k) {
       const double t = a + span * g.x[k];
@@ -44,7 +47,7 @@ std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int 
       sum += (g.w[k] * span * du) * std::polar(1.0, phi(u));
     }
   }
-  evaluations += 20 * kPanels;
+  evaluations += 20 * panels;
   return sum;
 }
 
@@ -53,25 +56,26 @@ std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int 
 const std::array<double, 20>& gl_nodes() { return rule().x; }
 const std::array<double, 20>& gl_weights() { return rule().w; }
 
-std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations) {
-  const auto phi = [&](double u) { return seg.phi_at(law, u); };
+std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations, int panels) {
+  const double Fa = law.F(seg.qa);
+  const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)); };
   const double ua = seg.ua, ub = seg.ub, len = ub - ua;
   const bool rough_at_zero = law.alpha < 0 && law.alpha != -1;
   if (rough_at_zero && seg.qa != seg.qb) {
     const double u_zero = ua - seg.qa / seg.slope();
     if (u_zero > ua && u_zero < ub) {
-      return -graded(phi, u_zero, ua, 0.0, 4, evaluations) + graded(phi, u_zero, ub, 0.0, 4, evaluations);
+      return -graded(phi, u_zero, ua, 0.0, 4, panels, evaluations) + graded(phi, u_zero, ub, 0.0, 4, panels, evaluations);
     }
     if (u_zero <= ua && ua - u_zero < 0.5 * len) {
       const double t0 = std::pow((ua - u_zero) / (ub - u_zero), 0.25);
-      return graded(phi, u_zero, ub, t0, 4, evaluations);
+      return graded(phi, u_zero, ub, t0, 4, panels, evaluations);
     }
     if (u_zero >= ub && u_zero - ub < 0.5 * len) {
       const double t0 = std::pow((u_zero - ub) / (u_zero - ua), 0.25);
-      return -graded(phi, u_zero, ua, t0, 4, evaluations);
+      return -graded(phi, u_zero, ua, t0, 4, panels, evaluations);
     }
   }
-  return graded(phi, ua, ub, 0.0, 1, evaluations);
+  return graded(phi, ua, ub, 0.0, 1, panels, evaluations);
 }
 
 std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg) {

@@ -50,12 +50,14 @@ struct LaLaw {
 
   /// F[a, b] = (F(b) − F(a)) / (b − a), the mean curvature between q = a and q = b.
   /// Near a = b a midpoint Taylor series replaces the cancelling difference.
-  double divided_difference(double a, double b) const {
+  double divided_difference(double a, double b) const { return divided_difference(a, F(a), b); }
+  /// The same with F(a) supplied (hot loops over one segment).
+  double divided_difference(double a, double Fa, double b) const {
     if (a == b) return kappa_of_q(a);
     const double d = b - a, m = 0.5 * (a + b);
     const bool close = alpha == 0 ? std::abs(d) < 1e-4 : std::abs(d) < 1e-4 * std::abs(m);
     if (close) return kappa_of_q(m) + d2K(m) * d * d / 24.0;
-    return (F(b) - F(a)) / d;
+    return (F(b) - Fa) / d;
   }
 };
 
@@ -87,8 +89,9 @@ const std::array<double, 20>& gl_weights();
 /// where q = 0 (an inflection, α < 0); next to a zero of q (inside or within half a piece
 /// length outside) φ − φ* ~ |u − u*|^(1 − 1/α) is not smooth, and the substitution
 /// u = u* + (u_end − u*)·t^4 makes the integrand smooth enough for 20 nodes.
-/// `evaluations` is incremented by the number of integrand calls.
-std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations);
+/// At least `panels` equal panels of 20 nodes per piece, and one per radian of turning on
+/// it; `evaluations` is incremented by the number of integrand calls.
+std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations, int panels = 1);
 
 /// The same integral by Boost tanh-sinh (tolerance 1e-15) in the original variable, split
 /// where q = 0: an independent evaluation for residual checks (slower).
