@@ -10,15 +10,42 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kRootMethodNames = {"bisection", "secant", "toms748", "ceres"};
 
-/// Residual r(x) = f(x) for Ceres; a non-finite value rejects the step instead of aborting.
-struct Residual1d {
-  const std::function<double(double)>* f;
-  long* evaluations;
-  bool operator()(const double* x, double* residual) const {
-    ++*evaluations;
-    residual[0] = (*f)(x[0]);
-    return std::isfinite(residual[0]);
+/// Residual r(x) = f(x) for Ceres with a finite-difference derivative that never leaves the
+/// bracket (central inside it, one-sided at its ends): f may be undefined outside. A non-finite
+/// value rejects the step instead of aborting.
+class BracketedResidual : public ceres::SizedCostFunction<1, 1> {
+ public:
+  BracketedResidual(const std::function<double(double)>* f, long* evaluations, double lo, double hi)
+      : f_(f), evaluations_(evaluations), lo_(lo), hi_(hi) {}
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const double x = parameters[0][0];
+    residuals[0] = call(x);
+    if (!std::isfinite(residuals[0])) return false;
+    if (jacobians != nullptr && jacobians[0] != nullptr) {
+      const double h = 1e-7 * std::max(std::abs(x), hi_ - lo_);
+      double d = 0;
+      if (x - h >= lo_ && x + h <= hi_) {
+        d = (call(x + h) - call(x - h)) / (2 * h);
+      } else if (x + h <= hi_) {
+        d = (call(x + h) - residuals[0]) / h;
+      } else {
+        d = (residuals[0] - call(x - h)) / h;
+      }
+      if (!std::isfinite(d)) return false;
+      jacobians[0][0] = d;
+    }
+    return true;
   }
+
+ private:
+  double call(double x) const {
+    ++*evaluations_;
+    return (*f_)(x);
+  }
+  const std::function<double(double)>* f_;
+  long* evaluations_;
+  double lo_, hi_;
 };
 
 }  // namespace
@@ -45,7 +72,6 @@ RootResult ceres_root(const std::function<double(double)>& f, const Bracket& b, 
   long ceres_evaluations = 0;
   double x = b.lo - b.f_lo * (b.hi - b.lo) / (b.f_hi - b.f_lo);  // regula falsi start
   if (!(x > b.lo && x < b.hi)) x = 0.5 * (b.lo + b.hi);
-  // Keep the central difference inside the bracket: Ceres' relative step is 1e-6 |x|.
   const std::function<double(double)> tracked = [&](double y) {
     const double v = f(y);
     if (std::isfinite(v) && y >= b.lo && y <= b.hi) t.note(y, v);
@@ -53,8 +79,7 @@ RootResult ceres_root(const std::function<double(double)>& f, const Bracket& b, 
   };
   ceres::Problem::Options problem_options;
   ceres::Problem problem(problem_options);
-  auto* cost = new ceres::NumericDiffCostFunction<Residual1d, ceres::CENTRAL, 1, 1>(
-      new Residual1d{&tracked, &ceres_evaluations});
+  auto* cost = new BracketedResidual(&tracked, &ceres_evaluations, b.lo, b.hi);
   problem.AddResidualBlock(cost, nullptr, &x);
   problem.SetParameterLowerBound(&x, 0, b.lo);
   problem.SetParameterUpperBound(&x, 0, b.hi);

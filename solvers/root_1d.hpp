@@ -279,8 +279,8 @@ RootResult toms748(F&& f, const Bracket& b, const RootOptions& o = {}) {
   return r;
 }
 
-/// Ceres Solver on the 1-D residual f(x) with bounds [lo, hi] and a central-difference
-/// derivative; starts at the regula-falsi point of the bracket. Stops at Ceres' convergence
+/// Ceres Solver on the 1-D residual f(x) with bounds [lo, hi] and a finite-difference derivative
+/// that stays inside the bracket (central, one-sided at the ends); starts at the regula-falsi point of the bracket. Stops at Ceres' convergence
 /// tests (parameter tolerance x_rtol, function tolerance) or when |f| ≤ f_atol.
 RootResult ceres_root(const std::function<double(double)>& f, const Bracket& b, const RootOptions& o = {});
 

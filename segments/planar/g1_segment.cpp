@@ -202,8 +202,9 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
     }
     if (!found) {
       g.status = Status::no_solution;
-      g.message = std::string(fn) + ": outside the drawable region: the start angle of the trial curves stays below the " +
-                  "control triangle's (" + format_number(c.target) + " rad) up to Lambda0 = " +
+      g.message = std::string(fn) + ": outside the drawable region (or closer to the end of the Lambda0 range than double " +
+                  "precision resolves): the start angle of the trial curves stays below the control triangle's (" +
+                  format_number(c.target) + " rad) up to Lambda0 = " +
                   format_number(p.lambda_of(b.lo)) + " (range (0, " +
                   (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + "))";
       return g;
