@@ -1,0 +1,128 @@
+// G2 Hermite (004 §3) and S-curve (004 §2.5) timings. Targets (issue 9): G2 ≤ 1 ms median
+// including the initial estimate; S-curve ≤ 50 µs. Each iteration solves the next problem of
+// a fixed random set (same distribution as experiments/g2_random.cpp), so the time is a mean
+// over the set; counters report the share solved.
+//   bench_hermite --benchmark_filter=G2 --benchmark_repetitions=5
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <random>
+
+#include "hermite/detail/g2_system.hpp"
+#include "hermite/g2_hermite.hpp"
+#include "hermite/s_curve.hpp"
+
+namespace {
+
+using namespace lac;
+using namespace lac::hermite;
+
+constexpr double kAlphas[] = {-0.5, -1.0, -2.0};
+
+std::vector<G2Problem> g2_set(double alpha) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2), curvature(-3, 3);
+  std::vector<G2Problem> v(64);
+  for (auto& p : v) {
+    const double t0 = angle(rng), k0 = curvature(rng), t1 = angle(rng), k1 = curvature(rng);
+    p = {{{0, 0}, t0, k0}, {{1, 0}, t1, k1}, alpha};
+  }
+  return v;
+}
+
+void run_g2(benchmark::State& state, G2Solver solver, G2Start start, bool verify) {
+  const auto set = g2_set(kAlphas[state.range(0)]);
+  G2Options o;
+  o.solver = solver;
+  o.start = start;
+  o.verify = verify;
+  size_t i = 0;
+  long solved = 0, calls = 0;
+  for (auto _ : state) {
+    const G2Result r = solve_g2(set[i++ % set.size()], o);
+    benchmark::DoNotOptimize(r.length);
+    solved += usable(r.status);
+    ++calls;
+  }
+  state.counters["alpha"] = kAlphas[state.range(0)];
+  state.counters["solved_share"] = static_cast<double>(solved) / static_cast<double>(calls);
+}
+
+void BM_G2_newton_fast(benchmark::State& s) { run_g2(s, G2Solver::newton, G2Start::fast, true); }
+void BM_G2_newton_fast_noverify(benchmark::State& s) { run_g2(s, G2Solver::newton, G2Start::fast, false); }
+void BM_G2_paper_fast(benchmark::State& s) { run_g2(s, G2Solver::paper, G2Start::fast, true); }
+void BM_G2_ceres_fast(benchmark::State& s) { run_g2(s, G2Solver::ceres, G2Start::fast, true); }
+void BM_G2_newton_grid(benchmark::State& s) { run_g2(s, G2Solver::newton, G2Start::bezier_grid, true); }
+void BM_G2_paper_grid(benchmark::State& s) { run_g2(s, G2Solver::paper, G2Start::bezier_grid, true); }
+BENCHMARK(BM_G2_newton_fast)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_G2_newton_fast_noverify)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_G2_paper_fast)->DenseRange(0, 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_G2_ceres_fast)->DenseRange(0, 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_G2_newton_grid)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_G2_paper_grid)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// The initial estimates alone (normalized problems of the same set).
+void run_start(benchmark::State& state, bool grid) {
+  const auto set = g2_set(kAlphas[state.range(0)]);
+  std::vector<detail::NormalizedG2> norm;
+  for (const auto& p : set) {
+    detail::NormalizedG2 n;
+    n.law = {p.alpha, p.start.kappa < 0 ? -1.0 : 1.0};
+    n.phi_s = p.start.theta;
+    n.phi_e = p.end.theta;
+    n.kappa_s = p.start.kappa;
+    n.kappa_e = p.end.kappa;
+    norm.push_back(n);
+  }
+  size_t i = 0;
+  for (auto _ : state) {
+    const auto& n = norm[i++ % norm.size()];
+    const auto e = grid ? detail::bezier_grid_start(n, n.law.alpha) : detail::fast_start(n);
+    benchmark::DoNotOptimize(e.h);
+  }
+}
+void BM_Start_fast(benchmark::State& s) { run_start(s, false); }
+void BM_Start_bezier_grid(benchmark::State& s) { run_start(s, true); }
+BENCHMARK(BM_Start_fast)->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Start_bezier_grid)->Arg(0)->Unit(benchmark::kMillisecond);
+
+// S-shaped inputs only: P0 = (0,0), P3 = (1,0), tangent legs 1/3 at random angles.
+std::vector<std::array<std::complex<double>, 4>> s_set() {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2);
+  std::vector<std::array<std::complex<double>, 4>> v;
+  while (v.size() < 64) {
+    const double a = angle(rng), b = angle(rng);
+    const std::array<std::complex<double>, 4> P{std::complex<double>(0, 0), std::polar(1.0 / 3, a),
+                                                std::complex<double>(1, 0) - std::polar(1.0 / 3, b), std::complex<double>(1, 0)};
+    const auto r = solve_s_curve(P, -1.0);
+    if (r.shape == SCurveShape::s_shaped && r.status == Status::ok) v.push_back(P);
+  }
+  return v;
+}
+
+void run_s(benchmark::State& state, RootMethod m, bool verify) {
+  static const auto set = s_set();
+  const double alpha = kAlphas[state.range(0)];
+  SCurveOptions o;
+  o.root = m;
+  o.verify = verify;
+  size_t i = 0;
+  long solved = 0, calls = 0;
+  for (auto _ : state) {
+    const SCurveResult r = solve_s_curve(set[i++ % set.size()], alpha, o);
+    benchmark::DoNotOptimize(r.lambda);
+    solved += r.status == Status::ok;
+    ++calls;
+  }
+  state.counters["alpha"] = alpha;
+  state.counters["solved_share"] = static_cast<double>(solved) / static_cast<double>(calls);
+}
+void BM_SCurve_toms748(benchmark::State& s) { run_s(s, RootMethod::toms748, true); }
+void BM_SCurve_toms748_noverify(benchmark::State& s) { run_s(s, RootMethod::toms748, false); }
+void BM_SCurve_bisection(benchmark::State& s) { run_s(s, RootMethod::bisection, true); }
+BENCHMARK(BM_SCurve_toms748)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SCurve_toms748_noverify)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SCurve_bisection)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
