@@ -3,8 +3,10 @@
 // central-difference Jacobian (ceres::NumericDiffCostFunction). Used with N = 2 unknowns and
 // M = 2 residuals for the space-curve end tangent (MATH.md §3), but generic over N, M.
 // r may be undefined at some x (return std::nullopt or a non-finite component): the functor then
-// reports failure and Ceres rejects the step and shrinks its trust region.
+// reports failure and Ceres rejects the step and shrinks its trust region (Ceres's glog messages
+// about it are silenced during the solve: the outcome is in the returned Status).
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <Eigen/Core>
 #include <cmath>
@@ -112,7 +114,12 @@ LeastSquaresResult<N, M> solve_least_squares(F&& f, const Eigen::Matrix<double, 
   detail::StopAtCost stop(0.5 * opt.residual_tolerance * opt.residual_tolerance);
   so.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
+  {  // Ceres logs an undefined residual (which we report as a Status) at glog's ERROR level
+    const int saved = FLAGS_minloglevel;
+    FLAGS_minloglevel = google::GLOG_FATAL;
+    ceres::Solve(so, &problem, &summary);
+    FLAGS_minloglevel = saved;
+  }
   for (int i = 0; i < N; ++i) r.x[i] = x[i];
   r.iterations = static_cast<int>(summary.iterations.size());
   ++r.evaluations;

@@ -110,17 +110,20 @@ CompoundSpaceSpec as_compound(const G1SpaceSpec& g) {
 
 // Largest s a trial may integrate to from s0: inside the s range (with a margin), and within the
 // remaining turning and torsion-turning budgets. ≤ s0 means no room.
-double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double torsion_budget) {
+double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double torsion_budget, double max_length) {
   const double hi = c.s_range().hi;
   double lim = std::isfinite(hi) ? hi - 1e-9 * std::max(1.0, std::abs(hi)) : kInf;
+  lim = std::min(lim, max_length);  // the turning of α < 1 is bounded: the budgets may never bind
   lim = std::min(lim, c.s_at_turning(c.turning(s0) + turn_budget));
   lim = std::min(lim, c.s_at_torsion_turning(c.torsion_turning(s0) + torsion_budget));
   return lim;
 }
 
-Trial construct(const Problem& pb, double lambda0, double nu0) {
+// `frenet`: integration settings (default: the options'); screening uses coarser ones.
+Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet = nullptr) {
   Trial t;
   const SpaceSegmentOptions& o = *pb.opt;
+  const FrenetOptions& fo = frenet ? *frenet : o.frenet;
   const CompoundSpaceSpec& s = pb.spec;
   if (!(lambda0 >= 0) || !(nu0 > 0) || !std::isfinite(lambda0) || !std::isfinite(nu0)) {
     t.why = "lambda0 or nu0 out of range";
@@ -128,16 +131,12 @@ Trial construct(const Problem& pb, double lambda0, double nu0) {
   }
   const LaSpaceCurve c0(s.alpha0, s.beta0, lambda0, s.omega0, nu0, s.type);
   const double cone0 = pb.compound ? s.r_theta * pb.theta : pb.theta;
-  const double lim0 = s_limit(c0, 0.0, o.max_turning, o.max_torsion_turning);
+  const double lim0 = s_limit(c0, 0.0, o.max_turning, o.max_torsion_turning, o.max_length);
   if (!(lim0 > 0)) {
     t.why = "no room in the s range";
     return t;
   }
-  if (!std::isfinite(lim0)) {
-    t.why = "unbounded s range and turning";  // only when Λ0 = 0 and the turning cap is infinite
-    return t;
-  }
-  const FrenetResult a = integrate_to_cone(c0, Frame3{}, 0.0, lim0, cone0, o.frenet);
+  const FrenetResult a = integrate_to_cone(c0, Frame3{}, 0.0, lim0, cone0, fo);
   t.ode_evaluations += a.evaluations;
   if (a.status != Status::ok || !a.met_cone) {
     t.why = a.status != Status::ok ? a.message : "segment 0 does not meet the cone before its s range or turning cap ends";
@@ -158,12 +157,13 @@ Trial construct(const Problem& pb, double lambda0, double nu0) {
       t.why = "joint arc length outside segment 1's s range";
       return t;
     }
-    const double lim1 = s_limit(c1, j.s_c, o.max_turning - c0.turning(a.s), o.max_torsion_turning - c0.torsion_turning(a.s));
+    const double lim1 = s_limit(c1, j.s_c, o.max_turning - c0.turning(a.s), o.max_torsion_turning - c0.torsion_turning(a.s),
+                               o.max_length);
     if (!(lim1 > j.s_c) || !std::isfinite(lim1)) {
       t.why = "no room for segment 1";
       return t;
     }
-    const FrenetResult b = integrate_to_cone(c1, a.frame, j.s_c, lim1, pb.theta, o.frenet);
+    const FrenetResult b = integrate_to_cone(c1, a.frame, j.s_c, lim1, pb.theta, fo);
     t.ode_evaluations += b.evaluations;
     if (b.status != Status::ok || !b.met_cone) {
       t.why = b.status != Status::ok ? b.message : "segment 1 does not meet the outer cone before its s range or turning cap ends";
@@ -272,6 +272,7 @@ RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
       no.max_evaluations = o.max_evaluations;
       no.fd_step = 1e-7;
       no.max_step = 1.5;
+      no.max_iterations = 25;  // converging runs need 4–8; a run this long is better restarted elsewhere
       auto f = [&](const Vec2& x) -> std::optional<Vec2> {
         const auto t = trial(x);
         if (!t) return std::nullopt;
@@ -323,10 +324,15 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
     Vec2 x;
   };
   // End-tangent error of the construction at x for each hand; undefined points are dropped.
-  auto screen = [&](const Vec2& x, std::vector<Candidate>& out) {
+  // Screening only ranks starting points: a coarse tolerance (1e-6) is enough and 3–4× cheaper.
+  FrenetOptions coarse = opt.frenet;
+  coarse.rtol = std::max(coarse.rtol, 1e-6);
+  coarse.atol = std::max(coarse.atol, 1e-7);
+  coarse.h = std::max(coarse.h, 1e-2);
+  auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const FrenetOptions* fo) {
     for (int h = 0; h < hands; ++h) {
       if (!in_box(x)) continue;
-      const Trial t = construct(problems[h], std::exp(x[0]), std::exp(x[1]));
+      const Trial t = construct(problems[h], std::exp(x[0]), std::exp(x[1]), fo);
       ode += t.ode_evaluations;
       ++evals;
       if (t.defined) out.push_back({tangent_angle(t.end_tangent_local, problems[h].target), h, x});
@@ -355,7 +361,7 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   auto by_error = [](const Candidate& a, const Candidate& b) { return a.error < b.error; };
   // Phase 1: the given start, with the hand whose end tangent is closer.
   std::vector<Candidate> first;
-  screen(x_start, first);
+  screen(x_start, first, nullptr);
   std::sort(first.begin(), first.end(), by_error);
   if (!first.empty())
     if (auto r = attempt(first.front())) return *r;
@@ -364,7 +370,7 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   std::vector<Candidate> grid;
   for (int i = -3; i <= 3; ++i)
     for (int k = -2; k <= 3; ++k)
-      if (i != 0 || k != 0) screen(x_start + Vec2(i, k), grid);
+      if (i != 0 || k != 0) screen(x_start + Vec2(i, k), grid, &coarse);
   if (first.size() > 1) grid.push_back(first[1]);
   std::sort(grid.begin(), grid.end(), by_error);
   for (const Candidate& c : grid) {
@@ -426,6 +432,7 @@ void SpaceSegmentOptions::validate() const {
   frenet.validate();
   if (!(max_turning > 0)) throw_input_error(who, "max_turning", max_turning, "(0, inf]");
   if (!(max_torsion_turning > 0)) throw_input_error(who, "max_torsion_turning", max_torsion_turning, "(0, inf]");
+  if (!(max_length > 0) || !std::isfinite(max_length)) throw_input_error(who, "max_length", max_length, "(0, inf)");
   if (!(lambda_start >= 0) || !std::isfinite(lambda_start)) throw_input_error(who, "lambda_start", lambda_start, "[0, inf)");
   if (!(nu_start > 0) || !std::isfinite(nu_start)) throw_input_error(who, "nu_start", nu_start, "(0, inf)");
   if (max_starts < 1) throw_input_error(who, "max_starts", max_starts, "[1, inf)");

@@ -58,6 +58,7 @@ struct SpaceSegmentOptions {
   FrenetOptions frenet{FrenetMethod::magnus6, 1e-10, 1e-11};
   double max_turning = 4 * M_PI;     ///< a trial curve may turn its tangent by at most this (∫κ ds)
   double max_torsion_turning = 40 * M_PI;  ///< and rotate its frame about T by at most this (∫τ ds)
+  double max_length = 100;           ///< and be at most this long in standard form (ρ(0) = 1)
   double lambda_start = 0;           ///< first starting point of the solver; 0: automatic (space_segment.cpp)
   double nu_start = 2.0;
   /// Solver runs: first from the start (hand with the smaller end-tangent error); if that fails,
