@@ -19,7 +19,7 @@ void apply_options(Rk4& m, const IntegratorOptions& o) {
 
 void apply_options(Rk45& m, const IntegratorOptions& o) {
   reject_h("rk45", o);
-  if (o.tol) m.rtol = m.atol = *o.tol;
+  if (o.tol) m.tol = *o.tol;
   m.validate();
 }
 
@@ -30,7 +30,7 @@ void apply_options(GaussKronrod& m, const IntegratorOptions& o) {
 }
 
 std::string describe(const Rk4& m) { return "rk4 h=" + format_number(m.h); }
-std::string describe(const Rk45& m) { return "rk45 rtol=" + format_number(m.rtol) + " atol=" + format_number(m.atol); }
+std::string describe(const Rk45& m) { return "rk45 tol=" + format_number(m.tol); }
 std::string describe(const GaussKronrod& m) {
   return "gauss-kronrod G10K21 tol=" + format_number(m.tol) + " max_depth=" + std::to_string(m.max_depth);
 }

@@ -63,6 +63,15 @@ struct SFormIntegrand {
   std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
 };
 
+/// Error carried by the integrand values themselves, which no quadrature estimate sees: ρ =
+/// exp(log ρ) has relative error ≈ ε|log ρ| and e^{iθ} absolute error ≈ ε|θ|; both integrands
+/// have ∫|f| = |Δs|. Added to the quadrature's own estimate.
+inline double integrand_rounding(const LaCurve& c, double theta_a, double theta_b) {
+  const double log_rho = std::max(std::abs(c.log_rho_at_theta_unchecked(theta_a)), std::abs(c.log_rho_at_theta_unchecked(theta_b)));
+  const double length = std::abs(c.s_at_theta(theta_b) - c.s_at_theta(theta_a));
+  return std::numeric_limits<double>::epsilon() * (1 + log_rho + std::max(std::abs(theta_a), std::abs(theta_b))) * length;
+}
+
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
 template <class M>
 IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& m, Form form, double a, double b) {
@@ -71,8 +80,10 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
     return m.integrate_theta(c, a, b);
   } else {
     static_assert(QuadratureMethod<M>, "method must be a QuadratureMethod or an LaClosedForm");
-    if (form == Form::s) return m.integrate(SFormIntegrand{&c}, a, b);
-    return m.integrate(ThetaFormIntegrand{&c}, a, b);
+    auto r = form == Form::s ? m.integrate(SFormIntegrand{&c}, a, b) : m.integrate(ThetaFormIntegrand{&c}, a, b);
+    r.error_estimate += form == Form::s ? integrand_rounding(c, c.theta_at_s(a), c.theta_at_s(b))
+                                        : integrand_rounding(c, a, b);
+    return r;
   }
 }
 

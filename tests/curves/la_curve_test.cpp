@@ -67,7 +67,19 @@ TEST(LaReference, TableSpansTheDomain) {
 }
 
 // s and ρ from the closed forms against the 40-digit values, allowing for the rounding of the
-// input θ to double: tolerance 4 ε (1 + condition number of the map θ → s or θ → ρ).
+// inputs α, Λ, θ to double and for exp() amplifying the absolute error of log ρ:
+// tolerance 4 ε (1 + |log ρ| + condition numbers of s and ρ with respect to θ, Λ and α).
+// The α condition number is estimated by a central difference of the closed form itself.
+double alpha_condition(double alpha, double lambda, double theta, double (LaCurve::*f)(double) const) {
+  const double d = 1e-7 * std::max(1.0, std::abs(alpha));
+  try {
+    const double up = (LaCurve(alpha + d, lambda).*f)(theta), down = (LaCurve(alpha - d, lambda).*f)(theta);
+    return std::abs(alpha * (std::log(std::abs(up)) - std::log(std::abs(down))) / (2 * d));
+  } catch (const InputError&) {
+    return 0;  // θ too close to the bound for the perturbed α: leave the bound to the other terms
+  }
+}
+
 TEST(LaClosedForms, MatchReferenceToAFewUlp) {
   double worst = 0;
   std::string worst_case;
@@ -75,10 +87,14 @@ TEST(LaClosedForms, MatchReferenceToAFewUlp) {
     const LaCurve c(rc.alpha, rc.lambda);
     const double s = c.s_at_theta(rc.theta);
     const double rho = c.rho_at_theta(rc.theta);
-    const double cond_s = std::abs(rc.theta * rc.rho / rc.s);
-    const double cond_rho = std::abs(rc.theta * rc.lambda * std::pow(rc.rho, rc.alpha - 1.0));
-    const double es = std::abs(s - rc.s) / std::abs(rc.s) / (kEps * (1 + cond_s));
-    const double er = std::abs(rho - rc.rho) / rc.rho / (kEps * (1 + cond_rho));
+    const double log_rho = std::abs(std::log(rc.rho));
+    const double cond_theta_s = std::abs(rc.theta * rc.rho / rc.s);                            // d log s / d log θ
+    const double cond_theta_rho = std::abs(rc.theta * rc.lambda * std::pow(rc.rho, 1.0 - rc.alpha));  // d log ρ / d log θ
+    const double bound_s = 1 + log_rho + 2 * cond_theta_s + alpha_condition(rc.alpha, rc.lambda, rc.theta, &LaCurve::s_at_theta);
+    const double bound_rho =
+        1 + log_rho + 2 * cond_theta_rho + alpha_condition(rc.alpha, rc.lambda, rc.theta, &LaCurve::rho_at_theta);
+    const double es = std::abs(s - rc.s) / std::abs(rc.s) / (kEps * bound_s);
+    const double er = std::abs(rho - rc.rho) / rc.rho / (kEps * bound_rho);
     EXPECT_LE(es, 4.0) << describe_case(rc) << " s=" << s << " ref " << rc.s;
     EXPECT_LE(er, 4.0) << describe_case(rc) << " rho=" << rho << " ref " << rc.rho;
     if (std::max(es, er) > worst) {
@@ -86,7 +102,7 @@ TEST(LaClosedForms, MatchReferenceToAFewUlp) {
       worst_case = describe_case(rc);
     }
   }
-  std::printf("closed forms: worst %.2f eps*(1+cond) at %s\n", worst, worst_case.c_str());
+  std::printf("closed forms: worst %.2f eps*(1 + |log rho| + condition numbers) at %s\n", worst, worst_case.c_str());
 }
 
 TEST(LaClosedForms, RoundTripsAndDerivativeIdentity) {
@@ -102,12 +118,15 @@ TEST(LaClosedForms, RoundTripsAndDerivativeIdentity) {
       const double th_from_rho = c.theta_at_log_rho(c.log_rho_at_theta(rc.theta));
       EXPECT_NEAR(th_from_rho, rc.theta, 16 * kEps * std::abs(rc.theta) * (1 + cond)) << describe_case(rc);
     }
-    // ds/dθ = ρ by a Richardson-extrapolated central difference (accuracy ~1e-10 relative).
+    // ds/dθ = ρ by a Richardson-extrapolated central difference. The step is 1e-3 of the local
+    // length scale of ρ (1 / |d log ρ/dθ| = 1 / (Λ ρ^(1−α))) and of the distance to the domain
+    // ends; the tolerance adds the rounding of the difference, ε|s| / (h ρ).
     const Interval d = c.theta_domain();
-    const double h = 1e-3 * std::min({1.0, std::abs(rc.theta) + 1e-3, (d.hi - rc.theta) / 4, (rc.theta - d.lo) / 4});
+    const double scale = 1.0 / std::max(1.0, rc.lambda * std::pow(rc.rho, 1.0 - rc.alpha));
+    const double h = 1e-3 * std::min({scale, std::abs(rc.theta) + 1e-3, (d.hi - rc.theta) / 4, (rc.theta - d.lo) / 4});
     auto ds = [&](double step) { return (c.s_at_theta(rc.theta + step) - c.s_at_theta(rc.theta - step)) / (2 * step); };
     const double derivative = (4 * ds(h / 2) - ds(h)) / 3;
-    EXPECT_NEAR(derivative / rc.rho, 1.0, 1e-7) << describe_case(rc);
+    EXPECT_NEAR(derivative / rc.rho, 1.0, 1e-7 + 10 * kEps * std::abs(rc.s) / (h * rc.rho)) << describe_case(rc);
   }
 }
 
@@ -138,7 +157,15 @@ TEST(LaPositions, IntegratorsMeetDocumentedAccuracy) {
       const double rel = err / std::abs(rc.c);
       EXPECT_LE(rel, tol.max_relative_error) << tol.integrator << " " << describe_case(rc) << " form "
                                              << to_string(r.form) << " evals " << r.evaluations;
-      if (err > 8 * kEps * std::abs(rc.c) && r.error_estimate < err) ++under_estimated;
+      // Below this level the difference is explained by rounding the inputs α, Λ, θ to double
+      // (the reference is exact in them), not by the method: ε|C|(1 + |log ρ| + α-condition).
+      const double input_rounding =
+          8 * kEps * std::abs(rc.c) * (1 + std::abs(std::log(rc.rho)) + alpha_condition(rc.alpha, rc.lambda, rc.theta, &LaCurve::s_at_theta));
+      if (err > input_rounding && r.error_estimate < err) {
+        ++under_estimated;
+        std::printf("  %s estimate %.3g below true error %.3g at %s\n", tol.integrator, r.error_estimate, err,
+                    describe_case(rc).c_str());
+      }
       if (rel > worst) {
         worst = rel;
         worst_case = describe_case(rc);
