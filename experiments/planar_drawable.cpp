@@ -144,10 +144,13 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
       lac::io::fmt(seconds, 3) + " s on " + std::to_string(threads) +
       " threads (shared machine; a timing only for planning larger grids).";
   doc.notes =
-      "001 leaves the drawable regions as future work, so there is nothing to compare with. Monotonic α ∈ [0, 1] "
-      "is drawable for every triangle (the start angle tends to θ as Λ → Λmax); α < 0 and α > 1 lose the triangles "
-      "whose start angle is too close to the turning (one leg much shorter than the other). A finer grid: "
-      "--grid 200 (or split it with --shard K/N and --merge N).";
+      "001 leaves the drawable regions as future work, so there is nothing to compare with. For monotonic "
+      "0 < α ≤ 1 the length is unbounded as Λ → Λmax, the start angle tends to the turning, and every triangle is "
+      "drawable. At α = 0 the length grows only like log(1/(Λmax − Λ)), so for the most skewed triangles the "
+      "needed Λ0 lies closer to Λmax than double precision resolves (no_solution here) or the tangents lose "
+      "accuracy (tolerance_not_met). α < 0 (finite length up to the inflection) and α > 1 (ρ → 0 at the start) "
+      "lose the triangles whose start angle is too close to the turning, i.e. one leg much shorter than the "
+      "other. A finer grid: --grid 200 (or split it with --shard K/N and --merge N).";
   lac::io::write_result_table(out, "planar_drawable", doc, t);
   std::cout << t.markdown();
 }
