@@ -319,7 +319,17 @@ std::vector<SegmentSample> sample(const G1Segment& g, int n, const M& method) {
   const LaCurve c0(f.alpha0, f.lambda0);
   const double s_a = f.configuration_b ? c0.s_at_theta(-f.theta0) : 0.0;
   const double s_b = f.configuration_b ? 0.0 : c0.s_at_theta(f.theta0);
-  for (const auto& r : polyline(c0, Parameter::s, s_a, s_b, n0, method)) {
+  // Uniform in s; when an end lies at the edge of the s domain in double precision (ρ → 0 at
+  // the start of configuration b, ρ → ∞ at an inflection), uniform in θ instead.
+  auto piece_points = [&](const LaCurve& curve, double s_lo, double s_hi, double th_lo, double th_hi, int count) {
+    try {
+      return polyline(curve, Parameter::s, s_lo, s_hi, count, method);
+    } catch (const InputError&) {
+      return polyline(curve, Parameter::theta, th_lo, th_hi, count, method);
+    }
+  };
+  const double th_a = f.configuration_b ? -f.theta0 : 0.0, th_b = f.configuration_b ? 0.0 : f.theta0;
+  for (const auto& r : piece_points(c0, s_a, s_b, th_a, th_b, n0)) {
     SegmentSample q;
     q.position = f.scale_rotation * m(r.point.position) + f.offset;
     q.s = k * (r.point.s - s_a);
@@ -333,7 +343,7 @@ std::vector<SegmentSample> sample(const G1Segment& g, int n, const M& method) {
     const double joint_tangent = f.configuration_b ? 0.0 : f.theta0;
     const double s_joint = out.back().s;
     const Point2 turn = rho_c * std::polar(1.0, joint_tangent);
-    const auto pts = polyline(c1, Parameter::s, 0.0, c1.s_at_theta(f.theta1), n1, method);
+    const auto pts = piece_points(c1, 0.0, c1.s_at_theta(f.theta1), 0.0, f.theta1, n1);
     for (size_t j = 1; j < pts.size(); ++j) {
       const auto& r = pts[j];
       SegmentSample q;

@@ -358,3 +358,42 @@ TEST(PlanarSegments, IntegratorChoiceAgrees) {
 
 }  // namespace
 }  // namespace lac
+
+namespace lac {
+namespace {
+
+// Extreme shapes (base angles down to 1e-6 rad), scales 1e±100 and α up to ±50, α near 0 and 1:
+// every call ends with a status (never NaN, never an exception for valid input), and usable
+// results sample to finite points.
+TEST(PlanarSegments, ExtremeInputGivesAStatusNeverNaN) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double alphas[] = {-50, -5, -1e-9, 0, 1e-9, 1 - 1e-9, 1, 1 + 1e-9, 5, 50};
+  int usable_count = 0, cases = 0;
+  while (cases < 600) {
+    const double b0 = std::pow(10.0, -6 * u(rng)) * 3.1, b2 = std::pow(10.0, -6 * u(rng)) * 3.1;
+    if (b0 + b2 >= 3.14159) continue;
+    ++cases;
+    const double h = std::sin(b0) * std::sin(b2) / std::sin(b0 + b2);
+    const double scale = std::pow(10.0, 200 * u(rng) - 100);
+    const ControlTriangle t{0, Point2{h / std::tan(b0), h} * scale, Point2{1, 0} * scale};
+    const double a0 = u(rng) < 0.5 ? alphas[rng() % 10] : -3 + 7 * u(rng);
+    const double a1 = u(rng) < 0.5 ? alphas[rng() % 10] : -3 + 7 * u(rng);
+    const double r = std::max(1e-12, u(rng));
+    const G1Segment g = cases % 2 ? solve_compound(t, a0, a1, r) : solve_g1(t, a0);
+    if (!usable(g.status)) {
+      EXPECT_FALSE(g.message.empty());
+      continue;
+    }
+    ++usable_count;
+    ASSERT_TRUE(std::isfinite(g.length) && std::isfinite(g.kappa0) && std::isfinite(g.kappa1));
+    EXPECT_LE(g.tangent_error, 1e-6);
+    for (const auto& q : sample_segment(g, 12))
+      ASSERT_TRUE(std::isfinite(std::abs(q.position)) && std::isfinite(q.kappa) && std::isfinite(q.s));
+  }
+  std::printf("  %d extreme cases, %d usable\n", cases, usable_count);
+  EXPECT_GT(usable_count, 60);
+}
+
+}  // namespace
+}  // namespace lac
