@@ -190,8 +190,8 @@ int main(int argc, char** argv) {
       std::string label;
       double worst_error = 0;
       bool all_ok = true;
-      std::vector<double> medians;
-      double worst_median = 0, mean_median = 0;
+      std::vector<double> medians, p10s;
+      double worst_median = 0, mean_median = 0, worst_p10 = 0;
     };
     std::vector<CandidateScore> cscores;
     lac::io::Progress progress("p002 timing", candidates.size() * rows.size() + methods.size() * rows.size());
@@ -206,10 +206,13 @@ int main(int argc, char** argv) {
       }
       if (sc.all_ok && sc.worst_error <= target) {
         for (const auto& ref : rows) {
-          sc.medians.push_back(time_endpoint(ref, c.method, s).median);
+          const auto t = time_endpoint(ref, c.method, s);
+          sc.medians.push_back(t.median);
+          sc.p10s.push_back(t.p10);
           progress.tick(++done);
         }
         sc.worst_median = *std::max_element(sc.medians.begin(), sc.medians.end());
+        sc.worst_p10 = *std::max_element(sc.p10s.begin(), sc.p10s.end());
         sc.mean_median = mean(sc.medians);
       } else {
         done += rows.size();
@@ -219,7 +222,7 @@ int main(int argc, char** argv) {
     }
     const CandidateScore* best = nullptr;
     for (const auto& sc : cscores)
-      if (!sc.medians.empty() && (!best || sc.worst_median < best->worst_median)) best = &sc;
+      if (!sc.medians.empty() && (!best || sc.worst_p10 < best->worst_p10)) best = &sc;
     if (best) {
       for (const auto& c : candidates)
         if (c.label == best->label) methods.push_back({"best: " + c.label, c.method});
@@ -307,16 +310,18 @@ int main(int argc, char** argv) {
         for (const auto& p : paper) v.push_back(std::stod(p.at(keys[k])));
         paper_mean[k] = mean(v);
       }
-      auto paper_col = [&](const std::string& label) -> int {
-        if (label.rfind("rk4", 0) == 0) return 0;
-        if (label.rfind("igf", 0) == 0) return 1;
-        if (label.rfind("gauss-kronrod", 0) == 0) return 2;
-        return -1;
+      auto paper_col = [&](const MethodSpec& spec) -> int {  // the paper's column for the same method
+        if (spec.label.rfind("best", 0) == 0) return -1;
+        const std::string_view name = lac::name_of(spec.method);
+        return name == "rk4" ? 0 : name == "igf" ? 1 : name == "gauss-kronrod" ? 2 : -1;
       };
       std::vector<double> mean_end(methods.size()), mean_poly(methods.size()), worst_err(methods.size());
+      std::vector<double> mean_end10(methods.size()), mean_poly10(methods.size());
       for (size_t k = 0; k < methods.size(); ++k) {
-        std::vector<double> e, p;
+        std::vector<double> e, p, e10, p10;
         for (size_t i = 0; i < rows.size(); ++i) {
+          e10.push_back(m[i][k].endpoint.p10);
+          p10.push_back(m[i][k].polyline.p10);
           e.push_back(m[i][k].endpoint.median);
           p.push_back(m[i][k].polyline.median);  // NaN when skipped: the mean says so
           worst_err[k] = std::max(worst_err[k], m[i][k].endpoint_rel_error);
@@ -324,22 +329,28 @@ int main(int argc, char** argv) {
         }
         mean_end[k] = mean(e);
         mean_poly[k] = mean(p);
+        mean_end10[k] = mean(e10);
+        mean_poly10[k] = mean(p10);
       }
       const size_t rk4 = 0;  // the first method is the reference of the ratios (default rk4 h=0.001)
       lac::io::Table t;
       t.columns = {"method", "paper mean s", "paper time / paper RK4", "ours endpoint mean us",
                    "ours endpoint time / " + methods[rk4].label, "ours polyline mean us",
-                   "ours polyline time / " + methods[rk4].label, "ours worst rel. error"};
+                   "ours polyline time / " + methods[rk4].label, "ours endpoint p10 ratio", "ours polyline p10 ratio",
+                   "ours worst rel. error"};
       for (size_t k = 0; k < methods.size(); ++k) {
-        const int pc = paper_col(methods[k].label);
+        const int pc = paper_col(methods[k]);
         t.add_row({methods[k].label, pc >= 0 ? fmt(paper_mean[pc], 6) : "", pc >= 0 ? fmt(paper_mean[pc] / paper_mean[0], 3) : "",
                    us(mean_end[k]), fmt(mean_end[k] / mean_end[rk4], 3), us(mean_poly[k]),
-                   fmt(mean_poly[k] / mean_poly[rk4], 3), sci(worst_err[k], 2)});
+                   fmt(mean_poly[k] / mean_poly[rk4], 3), fmt(mean_end10[k] / mean_end10[rk4], 3),
+                   fmt(mean_poly10[k] / mean_poly10[rk4], 3), sci(worst_err[k], 2)});
       }
       lac::io::ResultDoc doc;
       doc.title = "002 Appendix A: speed ratios between methods, paper and ours";
       doc.command = command;
-      doc.description = "Mean over the 18 rows of the median time per call; ratios to the first method. 002: RK4 "
+      doc.description = "Mean over the 18 rows of the median time per call; ratios to the first method (also "
+                        "from the p10 times, less affected by the load of the shared machine; nan: a method whose "
+                        "polyline was not run on some row). 002: RK4 "
                         "is 9.3x faster than IGF and 99.4x faster than Gauss-Kronrod (the ratios of its column "
                         "means, recomputed here from its typed table). " + paper_note + " " + settings;
       doc.notes =
@@ -356,12 +367,12 @@ int main(int argc, char** argv) {
     }
     {  // the best-method search
       lac::io::Table t;
-      t.columns = {"candidate", "worst endpoint rel. error (18 rows)", "meets target", "slowest row median us",
-                   "mean median us", "chosen"};
+      t.columns = {"candidate", "worst endpoint rel. error (18 rows)", "meets target", "slowest row p10 us",
+                   "slowest row median us", "mean median us", "chosen"};
       for (const auto& sc : cscores) {
         const bool q = !sc.medians.empty();
         t.add_row({sc.label, sci(sc.worst_error, 2) + (sc.all_ok ? "" : " (status not ok)"), q ? "yes" : "no",
-                   q ? us(sc.worst_median) : "", q ? us(sc.mean_median) : "", best == &sc ? "**best**" : ""});
+                   q ? us(sc.worst_p10) : "", q ? us(sc.worst_median) : "", q ? us(sc.mean_median) : "", best == &sc ? "**best**" : ""});
       }
       lac::io::ResultDoc doc;
       doc.title = "002 Appendix A: the fastest method reaching " + sci(target, 1) + " relative";
@@ -369,9 +380,11 @@ int main(int argc, char** argv) {
       doc.description = "Each candidate configuration computes the endpoint C(theta = 1) on all 18 rows; those whose "
                         "worst relative error is at most " + sci(target, 1) +
                         " (and whose status is ok) are timed on every row; the best has the smallest slowest-row "
-                        "median (issue target: <= 2 us on every row). " + settings;
-      doc.notes = best ? "Best: `" + best->label + "`, slowest row " + us(best->worst_median) + " us, mean " +
-                             us(best->mean_median) + " us."
+                        "p10 (the machine is shared and loaded, so medians carry other processes' time; p10 is the "
+                        "nearest to the uncontended cost). The issue's target (<= 2 us median on every row) is "
+                        "judged with bench_p002's CPU times, see docs/p002.md. " + settings;
+      doc.notes = best ? "Best: `" + best->label + "`, slowest row p10 " + us(best->worst_p10) + " us (median " +
+                             us(best->worst_median) + " us), mean of the row medians " + us(best->mean_median) + " us."
                        : "No candidate met the target on every row.";
       lac::io::write_result_table(out_dir, "p002_appendix_a_best", doc, t);
     }
