@@ -114,7 +114,7 @@ struct G2Result {
   double residual_position = 0;   ///< |end point − P1| (user units)
   double residual_angle = 0;      ///< max over both ends, rad
   double residual_curvature = 0;  ///< max over both ends (user units)
-  int iterations = 0;             ///< solver iterations (paper: total inner steps; see docs)
+  int iterations = 0;             ///< solver iterations (paper: outer iterations on h; Ceres: LM iterations)
   long evaluations = 0;           ///< integrand evaluations
   double seconds = 0;             ///< wall time of the whole call
   double start_seconds = 0;       ///< part spent on the initial estimate(s)
