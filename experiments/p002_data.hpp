@@ -62,6 +62,7 @@ struct ReferenceEnd {
   double alpha = 0, lambda = 0, theta_end = 0, s_end = 0;
   std::complex<double> c;  ///< rounded from 25 digits
   double abs_c = 0;
+  double igf_cancellation = 0;  ///< rounding amplification of the closed form's Γ difference (0: not in the file)
 };
 
 inline std::vector<ReferenceEnd> read_reference(const std::filesystem::path& path = default_reference_csv()) {
@@ -76,6 +77,7 @@ inline std::vector<ReferenceEnd> read_reference(const std::filesystem::path& pat
     e.s_end = std::stod(r.at("s_end"));
     e.c = {std::stod(r.at("x")), std::stod(r.at("y"))};
     e.abs_c = std::stod(r.at("abs_c"));
+    if (r.count("igf_cancellation")) e.igf_cancellation = std::stod(r.at("igf_cancellation"));
     out.push_back(e);
   }
   return out;

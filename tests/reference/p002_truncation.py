@@ -24,6 +24,9 @@ Two independent evaluations per row, both at 40 digits:
      (mpmath.gammainc, complex argument), C = e^{-i/k}/k (ik)^a [G(a,-i/k) - G(a,-iU/k)],
      k = (alpha-1) Lambda, a = alpha/(alpha-1), U = 1 + k theta.
 Column `crosscheck` = |C_quad - C_igf| / |C_quad|; the script aborts if it exceeds 1e-25.
+Column `igf_cancellation` = max(|G(a,-i/k)|, |G(a,-iU/k)|) / |G(a,-i/k) - G(a,-iU/k)|: the factor by
+which rounding errors of the two incomplete gamma values are amplified in their difference, i.e. an
+IGF evaluation in double precision cannot be better than about igf_cancellation * eps relative.
 x, y are printed with 25 significant digits; s_end, theta_end are the interval's ends in
 both variables (MATH.md §1 closed forms).
 """
@@ -81,12 +84,23 @@ def quad_position(alpha, lam, theta_end):
     return mp.quad(f, mp.linspace(0, end, 65))
 
 
-def igf_position(alpha, lam, theta):
+def igf_terms(alpha, lam, theta):
     k = (alpha - 1) * lam
     a = alpha / (alpha - 1)
     U = 1 + k * theta
     j = mp.mpc(0, 1)
-    return mp.exp(-j / k) / k * mp.power(j * k, a) * (mp.gammainc(a, -j / k) - mp.gammainc(a, -j * U / k))
+    g0, g1 = mp.gammainc(a, -j / k), mp.gammainc(a, -j * U / k)
+    return mp.exp(-j / k) / k * mp.power(j * k, a), g0, g1
+
+
+def igf_position(alpha, lam, theta):
+    prefactor, g0, g1 = igf_terms(alpha, lam, theta)
+    return prefactor * (g0 - g1)
+
+
+def igf_cancellation(alpha, lam, theta):
+    _, g0, g1 = igf_terms(alpha, lam, theta)
+    return max(abs(g0), abs(g1)) / abs(g0 - g1)
 
 
 def row(set_name, alpha_text, lam_text, theta_end):
@@ -98,7 +112,7 @@ def row(set_name, alpha_text, lam_text, theta_end):
         raise SystemExit(f"crosscheck failed for {set_name} alpha={alpha_text} lambda={lam_text}: {mp.nstr(cross, 5)}")
     return [set_name, alpha_text, mp.nstr(alpha, 20), lam_text, mp.nstr(lam, 20), mp.nstr(theta_end, 25),
             mp.nstr(s_at_theta(alpha, lam, theta_end), 25), mp.nstr(c_quad.real, 25), mp.nstr(c_quad.imag, 25),
-            mp.nstr(abs(c_quad), 25), mp.nstr(cross, 3)]
+            mp.nstr(abs(c_quad), 25), mp.nstr(cross, 3), mp.nstr(igf_cancellation(alpha, lam, theta_end), 4)]
 
 
 def main():
@@ -117,9 +131,10 @@ def main():
         fh.write("# cross-checked against the incomplete-gamma closed form (MATH.md 1.1); crosscheck = relative difference.\n")
         fh.write("# alpha, lambda: exact binary64 values used by the C++ code (alpha_text: the paper's spelling).\n")
         fh.write("# theta_end, s_end: end of the interval [0, end] in both variables; x, y, abs_c: C at that end.\n")
+        fh.write("# igf_cancellation: max(|G0|, |G1|) / |G0 - G1| of the closed form's incomplete gammas (rounding amplification).\n")
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(["set", "alpha_text", "alpha", "lambda_text", "lambda", "theta_end", "s_end", "x", "y", "abs_c",
-                    "crosscheck"])
+                    "crosscheck", "igf_cancellation"])
         w.writerows(rows)
     print(f"wrote {len(rows)} rows to {out}")
 
