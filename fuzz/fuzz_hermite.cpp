@@ -1,0 +1,80 @@
+// libFuzzer target: G2 Hermite interpolation by a triple LA curve and S-shaped input by one LA
+// curve (hermite/) fed arbitrary end data, slopes and solver choices, and the polylines of
+// usable results. Properties: see fuzz/fuzz_support.hpp.
+#include <array>
+#include <string>
+
+#include "fuzz/fuzz_support.hpp"
+#include "hermite/g2_hermite.hpp"
+#include "hermite/s_curve.hpp"
+
+using namespace lac;
+using lac::fuzz::guarded;
+using lac::fuzz::require_finite_result;
+using lac::fuzz::show;
+
+namespace {
+
+void check_samples(const std::string& what, const std::vector<hermite::CurveSample>& pts) {
+  for (const auto& q : pts) {
+    require_finite_result(what + " position", q.position);
+    require_finite_result(what + " s", q.s);
+    require_finite_result(what + " theta", q.theta);
+    require_finite_result(what + " kappa", q.kappa);
+  }
+}
+
+std::string show_point(std::complex<double> p) { return show(p.real()) + "," + show(p.imag()); }
+
+}  // namespace
+
+int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
+  const uint8_t mode = in.byte();
+  const int n = in.int_in(-1, 40);
+  if (mode % 2 == 0) {
+    hermite::G2Problem p;
+    p.start.position = {in.number(), in.number()};
+    p.start.theta = in.number();
+    p.start.kappa = in.number();
+    p.end.position = {in.number(), in.number()};
+    p.end.theta = in.number();
+    p.end.kappa = in.number();
+    p.alpha = in.number();
+    hermite::G2Options o;
+    o.solver = static_cast<hermite::G2Solver>(in.byte() % 3);
+    // The Bezier-grid start scans 10^4 quintics (004 §3.4): allowed, but rarely, to keep the rate up.
+    o.start = in.byte() == 255 ? hermite::G2Start::bezier_grid : hermite::G2Start::fast;
+    o.grid_fallback = false;
+    o.verify = in.byte() % 2;
+    const std::string what = "solve_g2 p0 " + show_point(p.start.position) + " theta0 " + show(p.start.theta) +
+                             " kappa0 " + show(p.start.kappa) + " p1 " + show_point(p.end.position) + " theta1 " +
+                             show(p.end.theta) + " kappa1 " + show(p.end.kappa) + " alpha " + show(p.alpha) +
+                             " solver " + std::string(to_string(o.solver)) + " start " +
+                             std::string(to_string(o.start));
+    hermite::G2Result r;
+    if (!guarded(what, [&] { r = hermite::solve_g2(p, o); })) return 0;
+    if (!usable(r.status)) return 0;
+    require_finite_result(what + " length", r.length);
+    require_finite_result(what + " residual_position", r.residual_position);
+    require_finite_result(what + " residual_angle", r.residual_angle);
+    require_finite_result(what + " residual_curvature", r.residual_curvature);
+    guarded(what + " polyline " + std::to_string(n), [&] { check_samples(what, r.curve.polyline(n)); });
+    return 0;
+  }
+  std::array<std::complex<double>, 4> control;
+  for (auto& c : control) c = {in.number(), in.number()};
+  const double alpha = in.number();
+  hermite::SCurveOptions o;
+  o.root = in.byte() % 2 ? hermite::RootMethod::bisection : hermite::RootMethod::toms748;
+  const std::string what = "solve_s_curve " + show_point(control[0]) + " " + show_point(control[1]) + " " +
+                           show_point(control[2]) + " " + show_point(control[3]) + " alpha " + show(alpha);
+  hermite::SCurveResult r;
+  if (!guarded(what, [&] { r = hermite::solve_s_curve(control, alpha, o); })) return 0;
+  if (!usable(r.status)) return 0;
+  require_finite_result(what + " lambda", r.lambda);
+  require_finite_result(what + " length", r.length);
+  require_finite_result(what + " residual_position", r.residual_position);
+  require_finite_result(what + " residual_angle", r.residual_angle);
+  guarded(what + " polyline " + std::to_string(n), [&] { check_samples(what, r.polyline(n)); });
+  return 0;
+}

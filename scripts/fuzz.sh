@@ -1,0 +1,161 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, build-fuzz/, library instrumented with
+# -fsanitize=fuzzer-no-link,address,undefined) and runs each for a number of executions, then
+# writes results/robustness.{md,csv}: per target executions, crashes, hangs and NaN results
+# (distinct findings) with notes. See docs/robustness.md.
+#
+# Usage: scripts/fuzz.sh [--short] [--runs N] [--max-time S] [--targets "cli la_curve ..."]
+#                        [--no-build] [--out DIR]
+#   default      10^6 executions per target (-runs=1000000), at most 3 h each
+#   --short      2·10^4 executions per target, at most 10 min each (tests / CI)
+#   --max-time   wall-clock cap per target in seconds (the table reports executions reached)
+# Findings: libFuzzer's crash/timeout/oom inputs and the harness's property violations (one input
+# per distinct message, LAC_FUZZ_CONTINUE mode) are saved under fuzz/findings/fuzz_<target>/.
+# Exit status 0 when no target has a finding, 3 otherwise (1 on build errors).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+RUNS=1000000
+MAX_TIME=10800
+TARGETS=""
+BUILD=1
+OUT=results
+MODE=full
+while (($#)); do
+  case "$1" in
+    --short) RUNS=20000; MAX_TIME=600; MODE=short ;;
+    --runs) RUNS=$2; shift ;;
+    --max-time) MAX_TIME=$2; shift ;;
+    --targets) TARGETS=$2; shift ;;
+    --no-build) BUILD=0 ;;
+    --out) OUT=$2; shift ;;
+    *) echo "fuzz.sh: unknown argument $1 (see the header of scripts/fuzz.sh)" >&2; exit 2 ;;
+  esac
+  shift
+done
+COMMAND="scripts/fuzz.sh"
+[ "$MODE" = short ] && COMMAND+=" --short"
+[ "$RUNS" != 1000000 ] && [ "$RUNS" != 20000 ] && COMMAND+=" --runs $RUNS"
+BUILD_DIR=${BUILD_DIR:-build-fuzz}
+JOBS=${JOBS:-2}
+
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+if ((BUILD)); then
+  bash scripts/setup.sh 2>/dev/null
+  flags="-g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+  if ! CC=clang CXX=clang++ cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLAC_FUZZERS=ON \
+        -DLAC_BENCHMARKS=OFF -DLAC_SANITIZE=OFF "-DCMAKE_CXX_FLAGS=$flags" >"$log" 2>&1 ||
+     ! cmake --build "$BUILD_DIR" -j "$JOBS" --target lac_fuzzers >"$log" 2>&1; then
+    grep -E "error" "$log" | head -40 >&2 || tail -40 "$log" >&2
+    exit 1
+  fi
+fi
+if [ -z "$TARGETS" ]; then
+  TARGETS=$(for f in fuzz/fuzz_*.cpp; do basename "$f" .cpp | sed 's/^fuzz_//'; done | tr '\n' ' ')
+fi
+
+# The CLI target's dictionary: every option and subcommand name in the cli/ sources.
+dict="$BUILD_DIR/fuzz-cli.dict"
+grep -ohE '"--?[a-z][a-z0-9-]*"|add_subcommand\("[a-z0-9-]+"' cli/*.cpp | sed 's/add_subcommand(//' | sort -u >"$dict"
+
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=0:allocator_may_return_null=1:symbolize=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LAC_FUZZ_CONTINUE=1
+summary="$BUILD_DIR/fuzz-summary.tsv"
+: >"$summary"
+status=0
+for t in $TARGETS; do
+  bin="$BUILD_DIR/fuzz/fuzz_$t"
+  [ -x "$bin" ] || { echo "fuzz.sh: no target $bin" >&2; exit 1; }
+  findings="fuzz/findings/fuzz_$t"
+  corpus="$BUILD_DIR/fuzz-corpus/$t"
+  mkdir -p "$findings" "$corpus"
+  marker="$BUILD_DIR/fuzz-$t.start"
+  touch "$marker"
+  sleep 1
+  args=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 "-runs=$RUNS" "-max_total_time=$MAX_TIME"
+        -timeout=20 -rss_limit_mb=2560 -max_len=512 "-artifact_prefix=$findings/" -print_final_stats=1)
+  [ "$t" = cli ] && [ -s "$dict" ] && args+=("-dict=$dict")
+  seeds=()
+  [ -d "fuzz/corpus/$t" ] && seeds+=("fuzz/corpus/$t")
+  runlog="$BUILD_DIR/fuzz-$t.log"
+  start=$(date +%s)
+  LAC_FUZZ_FINDINGS_DIR="$findings" "$bin" "${args[@]}" "$corpus" "${seeds[@]}" >"$runlog" 2>&1 || true
+  seconds=$(($(date +%s) - start))
+  # Executions: the largest "#N:" progress count of the fork-mode driver.
+  execs=$(grep -oE '^#[0-9]+' "$runlog" | tr -d '#' | sort -n | tail -1)
+  execs=${execs:-0}
+  # Classify every input saved during this run by replaying it once (without continue mode the
+  # harness aborts at its first finding and prints it): libFuzzer's crash-/oom-/timeout- files
+  # and the harness's <KIND>-<hash> files (one per distinct message).
+  sigs="$BUILD_DIR/fuzz-$t.signatures"
+  : >"$sigs"
+  for path in $(find "$findings" -type f -newer "$marker" | sort); do
+    f=$(basename "$path")
+    case "$f" in
+      timeout-*) echo "TIMEOUT: libFuzzer -timeout=20 exceeded [$f]" >>"$sigs"; continue ;;
+      crash-*|oom-*|leak-*|[A-Z]*-*) ;;
+      *) continue ;;
+    esac
+    line=$(LAC_FUZZ_CONTINUE=0 timeout 120 "$bin" "$path" 2>&1 |
+           grep -m1 -E 'LAC_FUZZ_[A-Z_]+:|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:' || true)
+    case "$line" in
+      LAC_FUZZ_*) echo "${line#*LAC_FUZZ_}" | sed 's/^/LAC_FUZZ_/' >>"$sigs" ;;
+      *) [[ "$f" == oom-* ]] && line="out of memory ${line}"
+         echo "SANITIZER_CRASH: ${line:-no longer reproduces} [$f]" >>"$sigs" ;;
+    esac
+  done
+  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" <<'PY'
+import re, sys
+target, execs, seconds, sigs_path, summary = sys.argv[1:]
+def strip(s):  # one signature per kind of failure, not per input
+    return re.sub(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?\b(nan|inf)\b|\[crash-[0-9a-f]+\]|\[oom-[0-9a-f]+\]", "#", s)[:140]
+kinds = {"crash": set(), "hang": set(), "nan": set()}
+examples = {}
+for line in open(sigs_path, errors="replace"):
+    line = line.strip()
+    kind_name = line.split(":", 1)[0]
+    if kind_name in ("LAC_FUZZ_HANG", "TIMEOUT"): k = "hang"
+    elif kind_name == "LAC_FUZZ_NAN": k = "nan"
+    else: k = "crash"
+    sig = strip(line)
+    if sig not in kinds[k]:
+        kinds[k].add(sig)
+        examples.setdefault(k, []).append(line[:160])
+notes = "; ".join(e.replace("|", "/") for k in ("crash", "hang", "nan") for e in examples.get(k, [])[:3]) or "none"
+with open(summary, "a") as f:
+    f.write("\t".join([target, execs, seconds, str(len(kinds["crash"])), str(len(kinds["hang"])), str(len(kinds["nan"])), notes]) + "\n")
+PY
+  line=$(tail -1 "$summary")
+  IFS=$'\t' read -r _ _ _ nc nh nn _ <<<"$line"
+  echo "fuzz_$t: $execs executions in ${seconds}s, crashes $nc, hangs $nh, NaN $nn" >&2
+  ((nc + nh + nn == 0)) || status=3
+done
+
+python3 - "$summary" "$OUT" "$COMMAND" "$RUNS" "$MAX_TIME" <<'PY'
+import csv, os, sys
+summary, out, command, runs, max_time = sys.argv[1:]
+rows = [l.rstrip("\n").split("\t") for l in open(summary) if l.strip()]
+os.makedirs(out, exist_ok=True)
+cols = ["target", "executions", "seconds", "crashes", "hangs", "nan_results", "notes"]
+with open(os.path.join(out, "robustness.csv"), "w", newline="") as f:
+    f.write(f"# written by: {command}\n")
+    w = csv.writer(f)
+    w.writerow(cols)
+    w.writerows(rows)
+with open(os.path.join(out, "robustness.md"), "w") as f:
+    f.write("# Robustness: libFuzzer targets\n\n")
+    f.write(f"Written by `{command}` — do not edit by hand; rerun the command.\n\n")
+    f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang, libFuzzer fork mode) for "
+            f"-runs={runs} executions or at most {max_time} s, whichever came first; `executions` is what it reached. "
+            "crashes = distinct sanitizer reports, unexpected exception types, errors without a parameter name, "
+            "CLI exit status 1; hangs = calls over the per-call bound (LAC_FUZZ_CALL_SECONDS, default 1 s) or "
+            "inputs over libFuzzer's -timeout=20; nan_results = NaN/inf in a successful result. Counts are distinct "
+            "findings (messages compared with their numbers removed); inputs are in fuzz/findings/<target>/. "
+            "Properties and findings: docs/robustness.md.\n\n")
+    f.write("| " + " | ".join(cols) + " |\n|" + "---|" * len(cols) + "\n")
+    for r in rows:
+        f.write("| " + " | ".join(c.replace("|", "/") for c in r) + " |\n")
+PY
+echo "fuzz.sh: wrote $OUT/robustness.md and $OUT/robustness.csv" >&2
+exit "$status"
