@@ -102,18 +102,19 @@ GammaIncResult gamma_inc_scaled(double a, std::complex<double> z) {
   return rescale(scaled_large(a, z), 1.0);
 }
 
-GammaIncResult gamma_inc_difference_scaled(double a, std::complex<double> z1, std::complex<double> z2) {
-  check_order("gamma_inc_difference_scaled", a);
-  z1 = check_argument("gamma_inc_difference_scaled", "z1", a, z1, false);
-  z2 = check_argument("gamma_inc_difference_scaled", "z2", a, z2, true);
+GammaIncResult gamma_inc_step_scaled(double a, std::complex<double> z1, std::complex<double> dz) {
+  constexpr const char* kName = "gamma_inc_step_scaled";
+  check_order(kName, a);
+  z1 = check_argument(kName, "z1", a, z1, false);
+  require_finite(kName, "dz.re", dz.real());
+  require_finite(kName, "dz.im", dz.imag());
+  const cplx z2 = check_argument(kName, "z2", a, z1 + dz, true);
   if (crosses_branch_cut(z1, z2))
-    throw_input_error("gamma_inc_difference_scaled", "z2", "the segment from z1 to z2 crosses the branch cut (negative real axis)");
-  if (z1 == z2) return GammaIncResult{0.0, Status::ok, 0, GammaIncRegion::segment_series};
-  const double gap = std::abs(z2 - z1);
-  if (gap <= kSegmentMaxRatio * std::abs(z1) && gap <= kSegmentMaxLength)
-    return detail::segment_series_scaled(a, z1, z2);
-  if (std::max(std::abs(z1), std::abs(z2)) <= kSeriesRadius)
-    return detail::lower_series_difference_scaled(a, z1, z2);
+    throw_input_error(kName, "z2", "the segment from z1 to z2 crosses the branch cut (negative real axis)");
+  if (dz == cplx(0.0, 0.0)) return GammaIncResult{0.0, Status::ok, 0, GammaIncRegion::segment_series};
+  const double gap = std::abs(dz);
+  if (gap <= kSegmentMaxRatio * std::abs(z1) && gap <= kSegmentMaxLength) return detail::segment_series_scaled(a, z1, dz);
+  if (std::max(std::abs(z1), std::abs(z2)) <= kSeriesRadius) return detail::lower_series_difference_scaled(a, z1, dz);
   // Far apart: the two values differ by O(1) of themselves, so subtracting them is safe.
   GammaIncResult g1 = gamma_inc_scaled(a, z1);
   GammaIncResult out = g1;
@@ -122,12 +123,19 @@ GammaIncResult gamma_inc_difference_scaled(double a, std::complex<double> z1, st
     out.value = g1.value - boost::math::tgamma(a) * exp_times_power(z1, -a, z1);
   } else {
     const GammaIncResult g2 = gamma_inc_scaled(a, z2);
-    out.value = g1.value - g2.value * std::exp(z1 - z2) * std::exp(a * (std::log(z2) - std::log(z1)));
+    out.value = g1.value - g2.value * std::exp(-dz) * std::exp(a * (std::log(z2) - std::log(z1)));
     out.iterations += g2.iterations;
     if (out.status == Status::ok) out.status = g2.status;
   }
   if (!(std::isfinite(out.value.real()) && std::isfinite(out.value.imag()))) out.status = Status::numerical_failure;
   return out;
+}
+
+GammaIncResult gamma_inc_difference_scaled(double a, std::complex<double> z1, std::complex<double> z2) {
+  check_order("gamma_inc_difference_scaled", a);
+  z1 = check_argument("gamma_inc_difference_scaled", "z1", a, z1, false);
+  z2 = check_argument("gamma_inc_difference_scaled", "z2", a, z2, true);
+  return gamma_inc_step_scaled(a, z1, z2 - z1);
 }
 
 GammaIncResult gamma_inc_difference(double a, std::complex<double> z1, std::complex<double> z2) {

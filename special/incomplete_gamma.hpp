@@ -69,4 +69,8 @@ GammaIncResult gamma_inc_difference(double a, std::complex<double> z1, std::comp
 /// e^(z1) z1^(−a) (Γ(a, z1) − Γ(a, z2)), z1 ≠ 0: the difference scaled by its start point.
 GammaIncResult gamma_inc_difference_scaled(double a, std::complex<double> z1, std::complex<double> z2);
 
+/// e^(z1) z1^(−a) (Γ(a, z1) − Γ(a, z1 + dz)), z1 ≠ 0, with the step dz given exactly: use this
+/// when z2 would be rounded (z1 + dz in double loses the low digits of a small dz).
+GammaIncResult gamma_inc_step_scaled(double a, std::complex<double> z1, std::complex<double> dz);
+
 }  // namespace lac::special

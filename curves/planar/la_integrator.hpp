@@ -8,19 +8,22 @@
 #include <variant>
 #include <vector>
 
+#include "curves/planar/la_igf.hpp"
 #include "curves/planar/la_position.hpp"
 #include "integrators/registry.hpp"
 
 namespace lac {
 
-using LaIntegrator = std::variant<Rk4, Rk45, GaussKronrod>;
+using LaIntegrator = std::variant<Rk4, Rk45, GaussKronrod, Igf>;
 
 /// Names accepted by make_la_integrator, in a stable order.
 std::span<const std::string_view> la_integrator_names();
-/// InputError for an unknown name or an option the method does not take.
+/// InputError for an unknown name or an option the method does not take ("igf" takes --tol,
+/// its relative accuracy target, and rejects --h).
 LaIntegrator make_la_integrator(std::string_view name, const IntegratorOptions& options = {});
 std::string_view name_of(const LaIntegrator& m);
 std::string describe(const LaIntegrator& m);
+std::string describe(const Igf& m);
 
 PositionResult position_at(const LaCurve& c, Parameter p, double t, const LaIntegrator& m, Form form = Form::automatic);
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const LaIntegrator& m,

@@ -169,8 +169,8 @@ GammaIncResult asymptotic_scaled(double a, cplx z, int max_terms) {
   return finish(sum / z, n, GammaIncRegion::asymptotic, status);
 }
 
-GammaIncResult segment_series_scaled(double a, cplx z1, cplx z2, int max_terms) {
-  const cplx delta = (z2 - z1) / z1;
+GammaIncResult segment_series_scaled(double a, cplx z1, cplx dz, int max_terms) {
+  const cplx delta = dz / z1;
   cplx c_prev = 0.0, c = 1.0;
   cplx power = delta;  // δ^(n+1)
   cplx sum = 0.0;
@@ -195,9 +195,10 @@ GammaIncResult segment_series_scaled(double a, cplx z1, cplx z2, int max_terms) 
   return finish(sum, n + 1, GammaIncRegion::segment_series, converged ? Status::ok : Status::max_iterations);
 }
 
-GammaIncResult lower_series_difference_scaled(double a, cplx z1, cplx z2, int max_terms) {
+GammaIncResult lower_series_difference_scaled(double a, cplx z1, cplx dz, int max_terms) {
+  const cplx z2 = z1 + dz;
   const bool to_zero = z2 == cplx(0.0, 0.0);  // a > 0: z1^(−a) (0 − γ(a, z1)) term by term
-  const cplx ratio = (z2 - z1) / z1;
+  const cplx ratio = dz / z1;
   const cplx L = to_zero ? 0.0 : std::abs(ratio) < 0.5 ? log1p(ratio) : std::log(z2) - std::log(z1);
   cplx term = 1.0;  // (−z1)^n / n!
   cplx sum = 0.0;

@@ -34,16 +34,16 @@ GammaIncResult continued_fraction_scaled(double a, cplx z, int max_steps = 20000
 /// grow first, status is tolerance_not_met (the caller then uses another region).
 GammaIncResult asymptotic_scaled(double a, cplx z, int max_terms = 500);
 
-/// e^(z1) z1^(−a) ∫_{z1}^{z2} t^(a−1) e^(−t) dt by the Taylor series of the integrand along the
-/// segment: with t = z1 (1 + x), x ∈ [0, δ], δ = (z2 − z1)/z1,
+/// e^(z1) z1^(−a) ∫_{z1}^{z2} t^(a−1) e^(−t) dt, z2 = z1 + dz, by the Taylor series of the integrand
+/// along the segment: with t = z1 (1 + x), x ∈ [0, δ], δ = dz/z1,
 ///   ∫_0^δ (1 + x)^(a−1) e^(−z1 x) dx = Σ_n c_n δ^(n+1)/(n + 1),
 ///   c_0 = 1, c_1 = a − 1 − z1, c_(n+1) = ((a − 1 − n − z1) c_n − z1 c_(n−1)) / (n + 1).
 /// Needs |δ| < 1 (radius of convergence); fast for |δ| ≤ 1/2 and |z2 − z1| ≤ 4.
-GammaIncResult segment_series_scaled(double a, cplx z1, cplx z2, int max_terms = 400);
+GammaIncResult segment_series_scaled(double a, cplx z1, cplx dz, int max_terms = 400);
 
 /// e^(z1) z1^(−a) (γ(a, z2) − γ(a, z1)) = e^(z1) Σ_n (−z1)^n/n! · L · expm1_ratio((a + n) L),
-/// L = log z2 − log z1: the lower-gamma series of both points combined term by term, so no
+/// z2 = z1 + dz, L = log z2 − log z1 (log1p(dz/z1) for small steps): the lower-gamma series of both points combined term by term, so no
 /// Γ(a) appears (any real a, including non-positive integers). For max(|z1|, |z2|) ≲ 1.5.
-GammaIncResult lower_series_difference_scaled(double a, cplx z1, cplx z2, int max_terms = 400);
+GammaIncResult lower_series_difference_scaled(double a, cplx z1, cplx dz, int max_terms = 400);
 
 }  // namespace lac::special::detail
