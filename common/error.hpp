@@ -1,6 +1,7 @@
 #pragma once
 // Input validation at the API boundary. Every rejection names the function, the
 // parameter, the offending value and the valid range, so a CLI can print it as one line.
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -20,14 +21,13 @@ class InputError : public std::domain_error {
   std::string parameter_;
 };
 
-/// Formats a double so that the message stays one short line.
+/// Shortest text that reads back as the same double (e.g. 1e-12, not 9.9999999999999998e-13).
 inline std::string format_number(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
 }
 
 [[noreturn]] inline void throw_input_error(std::string_view function, std::string_view parameter,

@@ -32,7 +32,8 @@ void apply_options(GaussKronrod& m, const IntegratorOptions& o) {
 std::string describe(const Rk4& m) { return "rk4 h=" + format_number(m.h); }
 std::string describe(const Rk45& m) { return "rk45 tol=" + format_number(m.tol); }
 std::string describe(const GaussKronrod& m) {
-  return "gauss-kronrod G10K21 tol=" + format_number(m.tol) + " max_depth=" + std::to_string(m.max_depth);
+  return "gauss-kronrod G10K21 tol=" + format_number(m.tol) + " max_intervals=" + std::to_string(m.max_intervals) +
+         " max_depth=" + std::to_string(m.max_depth);
 }
 
 std::span<const std::string_view> quadrature_names() {
