@@ -28,6 +28,7 @@ struct Tolerance {
 const Tolerance kTolerances[] = {
     {"gauss-kronrod", {}, 1e-13},
     {"rk45", {.h = {}, .tol = 1e-12}, 1e-10},
+    {"igf", {}, 1e-12},
 };
 
 struct ReferenceCase {
