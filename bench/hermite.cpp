@@ -97,7 +97,8 @@ std::vector<std::array<std::complex<double>, 4>> s_set() {
   while (v.size() < 64) {
     const double a = angle(rng), b = angle(rng);
     const std::array<std::complex<double>, 4> P{std::complex<double>(0, 0), std::polar(1.0 / 3, a),
-                                                std::complex<double>(1, 0) - std::polar(1.0 / 3, b), std::complex<double>(1, 0)};
+                                                std::complex<double>(1, 0) - std::polar(1.0 / 3, b),
+                                                std::complex<double>(1, 0)};
     const auto r = solve_s_curve(P, -1.0);
     if (r.shape == SCurveShape::s_shaped && r.status == Status::ok) v.push_back(P);
   }

@@ -19,7 +19,8 @@ struct G2Args {
 };
 
 nlohmann::json sample_json(const hermite::CurveSample& s) {
-  return {{"S", s.S}, {"s", s.s}, {"x", s.position.real()}, {"y", s.position.imag()}, {"theta", s.theta}, {"kappa", s.kappa}};
+  return {{"S", s.S},         {"s", s.s},        {"x", s.position.real()}, {"y", s.position.imag()},
+          {"theta", s.theta}, {"kappa", s.kappa}};
 }
 
 void run(const G2Args& a) {
@@ -69,11 +70,13 @@ void run(const G2Args& a) {
     if (a.points >= 2) {
       std::cout << "S,s,x,y,theta,kappa\n";
       for (const auto& s : pts)
-        std::cout << s.S << "," << s.s << "," << s.position.real() << "," << s.position.imag() << "," << s.theta << "," << s.kappa << "\n";
+        std::cout << s.S << "," << s.s << "," << s.position.real() << "," << s.position.imag() << "," << s.theta << ","
+                  << s.kappa << "\n";
     } else {
       std::cout << "status,length,residual_position,residual_angle,residual_curvature,iterations,evaluations,seconds\n"
-                << to_string(r.status) << "," << r.length << "," << r.residual_position << "," << r.residual_angle << ","
-                << r.residual_curvature << "," << r.iterations << "," << r.evaluations << "," << r.seconds << "\n";
+                << to_string(r.status) << "," << r.length << "," << r.residual_position << "," << r.residual_angle
+                << "," << r.residual_curvature << "," << r.iterations << "," << r.evaluations << "," << r.seconds
+                << "\n";
     }
     return;
   }
@@ -82,7 +85,8 @@ void run(const G2Args& a) {
             << ", curvature " << r.residual_curvature << "\niterations " << r.iterations << ", " << r.seconds << " s\n";
   if (usable(r.status)) {
     for (const auto& c : coefficients)
-      std::cout << "segment S in [" << c.S_begin << ", " << c.S_end << "]: c0 " << c.c0 << ", c1 " << c.c1 << ", c2 " << c.c2 << "\n";
+      std::cout << "segment S in [" << c.S_begin << ", " << c.S_end << "]: c0 " << c.c0 << ", c1 " << c.c1 << ", c2 "
+                << c.c2 << "\n";
   }
 }
 

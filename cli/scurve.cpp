@@ -23,7 +23,8 @@ void run(const SCurveArgs& a) {
   for (size_t k = 0; k < 4; ++k) P[k] = {p[k][0], p[k][1]};
   hermite::SCurveOptions o;
   o.root = hermite::parse_root_method(a.root);
-  if (a.points_out < 0 || a.points_out == 1) throw_input_error("lac scurve", "points-out", a.points_out, "0 or [2, inf)");
+  if (a.points_out < 0 || a.points_out == 1)
+    throw_input_error("lac scurve", "points-out", a.points_out, "0 or [2, inf)");
   const hermite::SCurveResult r = hermite::solve_s_curve(P, a.alpha, o);
   std::vector<hermite::CurveSample> pts;
   if (a.points_out >= 2 && usable(r.status)) pts = r.polyline(a.points_out);
@@ -47,7 +48,12 @@ void run(const SCurveArgs& a) {
     if (a.points_out >= 2) {
       nlohmann::json arr = nlohmann::json::array();
       for (const auto& s : pts)
-        arr.push_back({{"t", s.S}, {"s", s.s}, {"x", s.position.real()}, {"y", s.position.imag()}, {"theta", s.theta}, {"kappa", s.kappa}});
+        arr.push_back({{"t", s.S},
+                       {"s", s.s},
+                       {"x", s.position.real()},
+                       {"y", s.position.imag()},
+                       {"theta", s.theta},
+                       {"kappa", s.kappa}});
       j["points"] = arr;
     }
     std::cout << j.dump(2) << "\n";
@@ -57,7 +63,8 @@ void run(const SCurveArgs& a) {
   if (a.points_out >= 2) {
     std::cout << "t,s,x,y,theta,kappa\n";
     for (const auto& s : pts)
-      std::cout << s.S << "," << s.s << "," << s.position.real() << "," << s.position.imag() << "," << s.theta << "," << s.kappa << "\n";
+      std::cout << s.S << "," << s.s << "," << s.position.real() << "," << s.position.imag() << "," << s.theta << ","
+                << s.kappa << "\n";
   } else {
     std::cout << "status,shape,lambda,length,inflection_s,residual_position,residual_angle,iterations,seconds\n"
               << to_string(r.status) << "," << hermite::to_string(r.shape) << "," << r.lambda << "," << r.length << ","
@@ -69,7 +76,9 @@ void run(const SCurveArgs& a) {
 void setup(CLI::App& app) {
   auto* a = new SCurveArgs;  // owned for the process lifetime, like the CLI11 app
   auto* sub = app.add_subcommand("scurve", "S-shaped LA curve from four control points and alpha < 0 (004 §2.4-2.5)");
-  sub->add_option("--points", a->points, "Control points \"x0,y0 x1,y1 x2,y2 x3,y3\": start tangent P0->P1, end tangent P2->P3")->required();
+  sub->add_option("--points", a->points,
+                  "Control points \"x0,y0 x1,y1 x2,y2 x3,y3\": start tangent P0->P1, end tangent P2->P3")
+      ->required();
   sub->add_option("--alpha", a->alpha, "Slope of the LCG, [-5, 0)")->capture_default_str();
   sub->add_option("--root", a->root, "Root finder on Lambda: bisection (004) | toms748")->capture_default_str();
   sub->add_option("--points-out", a->points_out, "Number of curve points to print (0: none)")->capture_default_str();

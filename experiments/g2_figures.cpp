@@ -71,8 +71,8 @@ int main(int argc, char** argv) {
     std::vector<CurveSample> v;
     if (r.status == Status::ok) v = r.polyline(samples), write("fig3", label, alpha, 0, v);
     t.add_row({"fig3 (S-curve)", label, io::fmt(alpha), std::string(to_string(r.status)), io::fmt(r.length, 6),
-               io::sci(r.residual_position, 2), io::sci(r.residual_angle, 2), "—", v.empty() ? "—" : (monotone(v) ? "yes" : "no"),
-               std::to_string(r.iterations), io::fmt(1e3 * r.seconds)});
+               io::sci(r.residual_position, 2), io::sci(r.residual_angle, 2), "—",
+               v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(r.iterations), io::fmt(1e3 * r.seconds)});
   }
 
   // Figs. 6–7: α = −0.5, ends (0,0) at +0.6 rad and (4,0) at −0.6 rad, several end curvatures.
@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
       t.add_row({std::string(s.figure) + (joined ? " (joined G2)" : " (α = −0.5)"), s.label, io::fmt(s.problem.alpha),
                  std::string(to_string(r.status)), io::fmt(r.length, 6), io::sci(r.residual_position, 2),
                  io::sci(r.residual_angle, 2), io::sci(r.residual_curvature, 2),
-                 v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(r.iterations), io::fmt(1e3 * r.seconds)});
+                 v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(r.iterations),
+                 io::fmt(1e3 * r.seconds)});
     }
   }
   io::ResultDoc doc;

@@ -97,14 +97,15 @@ int main(int argc, char** argv) {
   grid_subset = std::min(grid_subset, count);
 
   io::Table t;
-  t.columns = {"α", "solver", "start", "problems", "solved", "success %", "failures by status", "median ms",
-               "p90 ms", "median start ms", "median iterations", "worst |ΔP|", "worst |Δθ|", "worst |Δκ|"};
+  t.columns = {
+      "α",         "solver", "start",           "problems",          "solved",     "success %",  "failures by status",
+      "median ms", "p90 ms", "median start ms", "median iterations", "worst |ΔP|", "worst |Δθ|", "worst |Δκ|"};
   auto row = [&](double alpha, G2Solver s, const std::string& start, const Stats& st) {
     std::vector<double> it(st.iterations.begin(), st.iterations.end());
     t.add_row({io::fmt(alpha), std::string(to_string(s)), start, std::to_string(st.tried), std::to_string(st.solved),
-               io::fmt(100.0 * st.solved / std::max(st.tried, 1), 4), failure_text(st),
-               io::fmt(quantile(st.ms, 0.5)), io::fmt(quantile(st.ms, 0.9)), io::fmt(quantile(st.start_ms, 0.5)),
-               io::fmt(quantile(it, 0.5)), io::sci(st.worst_pos, 2), io::sci(st.worst_ang, 2), io::sci(st.worst_cur, 2)});
+               io::fmt(100.0 * st.solved / std::max(st.tried, 1), 4), failure_text(st), io::fmt(quantile(st.ms, 0.5)),
+               io::fmt(quantile(st.ms, 0.9)), io::fmt(quantile(st.start_ms, 0.5)), io::fmt(quantile(it, 0.5)),
+               io::sci(st.worst_pos, 2), io::sci(st.worst_ang, 2), io::sci(st.worst_cur, 2)});
   };
   for (double alpha : alphas) {
     for (G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
@@ -125,8 +126,10 @@ int main(int argc, char** argv) {
           g = solve_g2(pr, o);
           if (i < grid_subset) grid.add(g);
         }
-        if (usable(r.status)) fallback.add(r);
-        else fallback.add(g, 1e3 * r.seconds, 1e3 * r.start_seconds);
+        if (usable(r.status))
+          fallback.add(r);
+        else
+          fallback.add(g, 1e3 * r.seconds, 1e3 * r.start_seconds);
       }
       row(alpha, solver, "fast", fast);
       row(alpha, solver, "fast + grid fallback", fallback);
@@ -140,7 +143,9 @@ int main(int argc, char** argv) {
   doc.command = cmd;
   doc.description =
       "Random G2 Hermite problems: P0 = (0,0), P1 = (1,0), tangent angles uniform in (−π/2, π/2), signed curvatures "
-      "uniform in (−3, 3), std::mt19937_64 seed " + std::to_string(seed) + ". Each row: one solver "
+      "uniform in (−3, 3), std::mt19937_64 seed " +
+      std::to_string(seed) +
+      ". Each row: one solver "
       "(`paper` = 004 §3.3 bisection on c30 / Newton on c10 / outer iteration on h; `newton` = this project's damped "
       "Newton on (log h, q1, q2); `ceres` = Ceres Levenberg–Marquardt on the 10-unknown system) from one initial "
       "estimate (`fast` = small-angle triple clothoid, this project's; `bezier-grid` = 004 §3.4, quintic Bézier "
@@ -152,7 +157,8 @@ int main(int argc, char** argv) {
       "load by other jobs: treat them as upper bounds with large spread; bench/hermite.cpp has the benchmark.";
   doc.notes =
       "004 reports (Core i7 3.4 GHz, 8 GB, C++ plug-in of a commercial CAD system): about " + io::fmt(kPaperG2TotalMs) +
-      " ms per G2 curve, of which about " + io::fmt(kPaperG2StartMs) + " ms for the Bézier optimization (004 §3.4); "
+      " ms per G2 curve, of which about " + io::fmt(kPaperG2StartMs) +
+      " ms for the Bézier optimization (004 §3.4); "
       "the Fig. 7/8 examples took 15–55 ms. It gives no success rate. Failures here are statuses (no_solution, "
       "max_iterations, numerical_failure) with a message, never a curve that misses the data. The `paper` solver's "
       "numerical_failure is the breakdown 004 §3.4 describes: the iteration on h pushes the end point behind the start "
@@ -163,8 +169,19 @@ int main(int argc, char** argv) {
 
   // S-curve inputs: P0 = (0,0), P3 = (1,0), tangent legs of length 1/3 at angles uniform in (−π/2, π/2).
   io::Table ts;
-  ts.columns = {"α", "root", "inputs", "S-shaped", "S solved", "S success %", "C-shaped", "C solved", "median µs (S)",
-                "p90 µs (S)", "median iterations (S)", "worst |ΔP|", "worst |Δθ|"};
+  ts.columns = {"α",
+                "root",
+                "inputs",
+                "S-shaped",
+                "S solved",
+                "S success %",
+                "C-shaped",
+                "C solved",
+                "median µs (S)",
+                "p90 µs (S)",
+                "median iterations (S)",
+                "worst |ΔP|",
+                "worst |Δθ|"};
   std::mt19937_64 rng_s(seed + 1);
   std::vector<std::array<std::complex<double>, 4>> inputs(static_cast<size_t>(scurve_count));
   for (auto& P : inputs) {
@@ -193,9 +210,9 @@ int main(int argc, char** argv) {
         }
       }
       ts.add_row({io::fmt(alpha), std::string(to_string(m)), std::to_string(inputs.size()), std::to_string(s_shaped),
-                  std::to_string(s_solved), io::fmt(100.0 * s_solved / std::max(s_shaped, 1), 4), std::to_string(c_shaped),
-                  std::to_string(c_solved), io::fmt(quantile(us, 0.5)), io::fmt(quantile(us, 0.9)),
-                  io::fmt(quantile(it, 0.5)), io::sci(wp, 2), io::sci(wa, 2)});
+                  std::to_string(s_solved), io::fmt(100.0 * s_solved / std::max(s_shaped, 1), 4),
+                  std::to_string(c_shaped), std::to_string(c_solved), io::fmt(quantile(us, 0.5)),
+                  io::fmt(quantile(us, 0.9)), io::fmt(quantile(it, 0.5)), io::sci(wp, 2), io::sci(wa, 2)});
     }
   }
   io::ResultDoc ds;
@@ -203,7 +220,9 @@ int main(int argc, char** argv) {
   ds.command = cmd;
   ds.description =
       "Four control points P0 = (0,0), P1 = P0 + (1/3)e^{ia}, P2 = P3 − (1/3)e^{ib}, P3 = (1,0) with a, b uniform in "
-      "(−π/2, π/2) (seed " + std::to_string(seed + 1) + "). The Fig. 2 decision classifies each input as S- or "
+      "(−π/2, π/2) (seed " +
+      std::to_string(seed + 1) +
+      "). The Fig. 2 decision classifies each input as S- or "
       "C-shaped; both are solved by a search on Λ (`bisection` as in 004, or Boost TOMS 748). Solved: status ok and "
       "end point / end tangents within 1e-10 (end point by tanh-sinh). Times (S-shaped inputs only) per call on a "
       "shared, loaded machine.";

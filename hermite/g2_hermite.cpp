@@ -23,9 +23,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 std::string_view to_string(G2Solver s) {
   switch (s) {
-    case G2Solver::paper: return "paper";
-    case G2Solver::newton: return "newton";
-    case G2Solver::ceres: return "ceres";
+    case G2Solver::paper:
+      return "paper";
+    case G2Solver::newton:
+      return "newton";
+    case G2Solver::ceres:
+      return "ceres";
   }
   return "?";
 }
@@ -46,7 +49,8 @@ G2Start parse_g2_start(std::string_view name) {
 void G2Options::validate() const {
   if (!(tolerance >= 1e-16 && tolerance <= 1e-3)) throw_input_error("g2", "tolerance", tolerance, "[1e-16, 1e-3]");
   if (!(accept >= tolerance && accept <= 1)) throw_input_error("g2", "accept", accept, "[tolerance, 1]");
-  if (max_iterations < 1 || max_iterations > 100000) throw_input_error("g2", "max_iterations", max_iterations, "[1, 100000]");
+  if (max_iterations < 1 || max_iterations > 100000)
+    throw_input_error("g2", "max_iterations", max_iterations, "[1, 100000]");
   if (max_inner_iterations < 1 || max_inner_iterations > 100000)
     throw_input_error("g2", "max_inner_iterations", max_inner_iterations, "[1, 100000]");
 }
@@ -146,30 +150,39 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   res.curve.chord_angle = std::arg(d);
   if (pr.alpha >= 0 && !(pr.start.kappa * pr.end.kappa > 0)) {
     res.status = Status::no_solution;
-    res.message = "for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, so kappa0 and kappa1 "
-                  "must be nonzero with equal signs";
+    res.message =
+        "for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, so kappa0 and kappa1 "
+        "must be nonzero with equal signs";
     res.seconds = seconds_since(t_begin);
     return res;
   }
 
   if (pr.alpha >= 0 && !(p.law.sigma * (p.phi_e - p.phi_s) > 0)) {
     res.status = Status::no_solution;
-    res.message = "for alpha >= 0 the curvature keeps the sign of kappa0, so the turning theta1 - theta0 (measured "
-                  "from the chord, in (-pi, pi]) must have that sign too";
+    res.message =
+        "for alpha >= 0 the curvature keeps the sign of kappa0, so the turning theta1 - theta0 (measured "
+        "from the chord, in (-pi, pi]) must have that sign too";
     res.seconds = seconds_since(t_begin);
     return res;
   }
 
   auto run = [&](G2Start start) {
     const auto t0 = std::chrono::steady_clock::now();
-    const detail::StartEstimate e = start == G2Start::fast ? detail::fast_start(p) : detail::bezier_grid_start(p, pr.alpha);
+    const detail::StartEstimate e =
+        start == G2Start::fast ? detail::fast_start(p) : detail::bezier_grid_start(p, pr.alpha);
     res.start_seconds += seconds_since(t0);
     res.evaluations += e.evaluations;
     detail::SolverOutcome so;
     switch (o.solver) {
-      case G2Solver::newton: so = detail::solve_newton(p, e, o); break;
-      case G2Solver::paper: so = detail::solve_paper(p, e, o); break;
-      case G2Solver::ceres: so = detail::solve_ceres(p, e, o); break;
+      case G2Solver::newton:
+        so = detail::solve_newton(p, e, o);
+        break;
+      case G2Solver::paper:
+        so = detail::solve_paper(p, e, o);
+        break;
+      case G2Solver::ceres:
+        so = detail::solve_ceres(p, e, o);
+        break;
     }
     res.iterations += so.iterations;
     res.evaluations += so.evaluations;

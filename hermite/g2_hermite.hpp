@@ -62,8 +62,8 @@ struct G2Options {
   /// When the solver fails from the fast start, retry once from the Bézier-grid start
   /// (status fell_back when that succeeds).
   bool grid_fallback = true;
-  double tolerance = 1e-12;  ///< on the normalized residuals (chord = 1, angles in rad)
-  int max_iterations = 60;   ///< Newton / LM iterations; outer h iterations for "paper"
+  double tolerance = 1e-12;        ///< on the normalized residuals (chord = 1, angles in rad)
+  int max_iterations = 60;         ///< Newton / LM iterations; outer h iterations for "paper"
   int max_inner_iterations = 200;  ///< "paper": bisection steps on c30 and Newton/bisection steps on c10
   /// Residuals re-evaluated with Boost tanh-sinh quadrature (independent of the solver's
   /// Gauss–Legendre rule); without it they are the solver's own.
@@ -93,10 +93,10 @@ struct CurveSample {
 struct TripleLaCurve {
   detail::LaLaw law;
   std::array<detail::LinearQSegment, 3> segments{};  ///< in S, q of κ̃ = κh
-  double h = 1;            ///< length in chord units
-  std::complex<double> origin;  ///< user start point
-  double chord = 1;        ///< |P1 − P0|
-  double chord_angle = 0;  ///< direction of P1 − P0
+  double h = 1;                                      ///< length in chord units
+  std::complex<double> origin;                       ///< user start point
+  double chord = 1;                                  ///< |P1 − P0|
+  double chord_angle = 0;                            ///< direction of P1 − P0
 
   double length() const { return h * chord; }
   /// Point at S ∈ [0, 1] (position by Gauss–Legendre from the nearest joint).

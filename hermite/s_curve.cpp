@@ -1,8 +1,8 @@
 #include "hermite/s_curve.hpp"
 
+#include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -45,7 +45,8 @@ std::string_view to_string(SCurveShape s) {
 }
 
 void SCurveOptions::validate() const {
-  if (max_iterations < 1 || max_iterations > 10000) throw_input_error("scurve", "max_iterations", max_iterations, "[1, 10000]");
+  if (max_iterations < 1 || max_iterations > 10000)
+    throw_input_error("scurve", "max_iterations", max_iterations, "[1, 10000]");
   if (bracket_doublings < 1 || bracket_doublings > 2000)
     throw_input_error("scurve", "bracket_doublings", bracket_doublings, "[1, 2000]");
 }
@@ -84,13 +85,15 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     require_finite("scurve", names[k][0], P[k].real());
     require_finite("scurve", names[k][1], P[k].imag());
   }
-  if (!(alpha < 0 && alpha >= -kMaxAbsAlpha)) throw_input_error("scurve", "alpha", alpha, "[-5, 0) (an inflection needs alpha < 0, 004 §2.3)");
+  if (!(alpha < 0 && alpha >= -kMaxAbsAlpha))
+    throw_input_error("scurve", "alpha", alpha, "[-5, 0) (an inflection needs alpha < 0, 004 §2.3)");
   double scale_ref = 1;
   for (const auto& p : P) scale_ref = std::max(scale_ref, std::abs(p));
   const double tiny = 1e-12 * scale_ref;
   if (!(std::abs(P[1] - P[0]) > tiny)) throw_input_error("scurve", "p1", "coincides with p0 (no start tangent)");
   if (!(std::abs(P[3] - P[2]) > tiny)) throw_input_error("scurve", "p2", "coincides with p3 (no end tangent)");
-  if (!(std::abs(P[3] - P[0]) > tiny)) throw_input_error("scurve", "p3", "coincides with p0 (the chord must have positive length)");
+  if (!(std::abs(P[3] - P[0]) > tiny))
+    throw_input_error("scurve", "p3", "coincides with p0 (the chord must have positive length)");
 
   SCurveResult res;
   res.alpha = alpha;
@@ -113,7 +116,8 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   // Step 3: Fig. 2 decision. Non-S when φE lies strictly between 0 and φD.
   if (phi_e == 0 && phi_d == 0) {
     res.shape = SCurveShape::straight;
-    return finish(Status::no_solution, "collinear control points with parallel tangents: the curve is a straight segment");
+    return finish(Status::no_solution,
+                  "collinear control points with parallel tangents: the curve is a straight segment");
   }
   const bool s_shaped = !(phi_e * (phi_d - phi_e) > 0);
   res.shape = s_shaped ? SCurveShape::s_shaped : SCurveShape::c_shaped;
@@ -147,7 +151,9 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     return std::arg(end) - phi_e;
   };
   double g_lo = g(lo), g_hi = g(hi);
-  for (int k = 0; k < o.bracket_doublings && !std::isfinite(lambda_reach) && std::isfinite(g_hi) && (g_hi > 0) == (g_lo > 0); ++k) {
+  for (int k = 0;
+       k < o.bracket_doublings && !std::isfinite(lambda_reach) && std::isfinite(g_hi) && (g_hi > 0) == (g_lo > 0);
+       ++k) {
     lo = hi, g_lo = g_hi;
     hi *= 2;
     g_hi = g(hi);

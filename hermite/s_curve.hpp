@@ -45,9 +45,9 @@ struct SCurveResult {
   std::string message;
   SCurveShape shape = SCurveShape::s_shaped;
   double alpha = -1;
-  double lambda = 0;         ///< Λ of the standard form (κ = 1 at its start)
-  double length = 0;         ///< user units
-  double inflection_s = -1;  ///< arc length of the inflection from the (user) start; −1 if none
+  double lambda = 0;             ///< Λ of the standard form (κ = 1 at its start)
+  double length = 0;             ///< user units
+  double inflection_s = -1;      ///< arc length of the inflection from the (user) start; −1 if none
   double residual_position = 0;  ///< |end point − P3|
   double residual_angle = 0;     ///< end tangent vs P3 − P2 (rad)
   int iterations = 0;
@@ -58,9 +58,9 @@ struct SCurveResult {
   // similarity onto the user's points.
   detail::LaLaw law;
   detail::LinearQSegment standard;
-  bool mirrored = false;   ///< y → −y applied in the normalized frame
-  bool reversed = false;   ///< the standard form runs from P3 to P0
-  std::complex<double> origin;  ///< user point where the standard form starts
+  bool mirrored = false;                ///< y → −y applied in the normalized frame
+  bool reversed = false;                ///< the standard form runs from P3 to P0
+  std::complex<double> origin;          ///< user point where the standard form starts
   std::complex<double> rotation{1, 0};  ///< unit complex: normalized → user direction
   double scale = 1;
 
@@ -71,6 +71,7 @@ struct SCurveResult {
 
 /// α ∈ [−5, 0). Throws InputError for non-finite points, P1 = P0, P3 = P2, P3 = P0 or α
 /// out of range; "no curve" (e.g. loops needed) is a status.
-SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& control, double alpha, const SCurveOptions& options = {});
+SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& control, double alpha,
+                           const SCurveOptions& options = {});
 
 }  // namespace lac::hermite

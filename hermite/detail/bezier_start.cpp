@@ -52,8 +52,10 @@ double t_at_length(const Ctrl& P, double target, double total) {
   for (int it = 0; it < 40; ++it) {
     const double g = arc_length(P, t) - target;
     if (std::abs(g) < 1e-13 * total) break;
-    if (g > 0) hi = t;
-    else lo = t;
+    if (g > 0)
+      hi = t;
+    else
+      lo = t;
     const double tn = t - g / derivs(P, t).d1.norm();
     t = (tn > lo && tn < hi) ? tn : 0.5 * (lo + hi);
   }

@@ -7,10 +7,11 @@
 namespace lac::hermite::detail {
 namespace {
 
-
 // Newton unknowns: z = (log h, z1, z2) with q = z for α ≤ 0 and q = σ e^(−αz) (z = log|κ̃|)
 // for α > 0, so that h > 0 and q keeps the only sign an α > 0 segment allows.
-double q_of_z(const NormalizedG2& p, double z) { return p.law.alpha > 0 ? p.law.sigma * std::exp(-p.law.alpha * z) : z; }
+double q_of_z(const NormalizedG2& p, double z) {
+  return p.law.alpha > 0 ? p.law.sigma * std::exp(-p.law.alpha * z) : z;
+}
 double z_of_q(const NormalizedG2& p, double q) { return p.law.alpha > 0 ? -std::log(std::abs(q)) / p.law.alpha : q; }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #include "hermite/detail/linear_q.hpp"
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
-#include <algorithm>
 #include <vector>
 
 namespace lac::hermite::detail {
@@ -64,7 +64,8 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& s
   if (rough_at_zero && seg.qa != seg.qb) {
     const double u_zero = ua - seg.qa / seg.slope();
     if (u_zero > ua && u_zero < ub) {
-      return -graded(phi, u_zero, ua, 0.0, 4, panels, evaluations) + graded(phi, u_zero, ub, 0.0, 4, panels, evaluations);
+      return -graded(phi, u_zero, ua, 0.0, 4, panels, evaluations) +
+             graded(phi, u_zero, ub, 0.0, 4, panels, evaluations);
     }
     if (u_zero <= ua && ua - u_zero < 0.5 * len) {
       const double t0 = std::pow((ua - u_zero) / (ub - u_zero), 0.25);
@@ -87,7 +88,8 @@ std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQ
   for (size_t k = 0; k + 1 < cuts.size(); ++k) {
     auto c = [&](double u) { return std::cos(seg.phi_at(law, u)); };
     auto s = [&](double u) { return std::sin(seg.phi_at(law, u)); };
-    sum += std::complex<double>(ts.integrate(c, cuts[k], cuts[k + 1], 1e-15), ts.integrate(s, cuts[k], cuts[k + 1], 1e-15));
+    sum += std::complex<double>(ts.integrate(c, cuts[k], cuts[k + 1], 1e-15),
+                                ts.integrate(s, cuts[k], cuts[k + 1], 1e-15));
   }
   return sum;
 }

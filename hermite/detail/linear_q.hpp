@@ -74,9 +74,7 @@ struct LinearQSegment {
     return t <= 0.5 ? qa + (qb - qa) * t : qb - (qb - qa) * (1.0 - t);
   }
   double kappa_at(const LaLaw& law, double u) const { return law.kappa_of_q(q_at(u)); }
-  double phi_at(const LaLaw& law, double u) const {
-    return phi_a + (u - ua) * law.divided_difference(qa, q_at(u));
-  }
+  double phi_at(const LaLaw& law, double u) const { return phi_a + (u - ua) * law.divided_difference(qa, q_at(u)); }
   double turning(const LaLaw& law) const { return length() * law.divided_difference(qa, qb); }
   double phi_b(const LaLaw& law) const { return phi_a + turning(law); }
 };

@@ -15,8 +15,12 @@ struct PaperSolver {
   double q0 = 0, q3 = 0;
 
   // ∂T/∂qa, ∂T/∂qb of a segment's turning T = L·F[qa, qb] (004 Appendix A in linear-q form).
-  double dT_dqa(double L, double a, double b) const { return L * (p.law.divided_difference(a, b) - p.law.kappa_of_q(a)) / (b - a); }
-  double dT_dqb(double L, double a, double b) const { return L * (p.law.kappa_of_q(b) - p.law.divided_difference(a, b)) / (b - a); }
+  double dT_dqa(double L, double a, double b) const {
+    return L * (p.law.divided_difference(a, b) - p.law.kappa_of_q(a)) / (b - a);
+  }
+  double dT_dqb(double L, double a, double b) const {
+    return L * (p.law.kappa_of_q(b) - p.law.divided_difference(a, b)) / (b - a);
+  }
 
   // Eq. (41) up to the constant factor (α−1)/α: φs + T1 + T2 + T3 − φe as a function of c10.
   double f(double c10, double q2) const {
@@ -72,8 +76,10 @@ struct PaperSolver {
     for (int k = 0; k < o.max_inner_iterations; ++k, ++inner_steps) {
       const double mid = 0.5 * (lo + hi), v = fv(mid);
       if (!std::isfinite(v)) return std::nullopt;
-      if ((v > 0) == (flo > 0)) lo = mid, flo = v;
-      else hi = mid;
+      if ((v > 0) == (flo > 0))
+        lo = mid, flo = v;
+      else
+        hi = mid;
       if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
     }
     return 0.5 * (lo + hi);
@@ -143,8 +149,10 @@ SolverOutcome solve_paper(const NormalizedG2& p, const StartEstimate& s, const G
       const double mid = 0.5 * (lo + hi);
       auto e = ps.eval_c30(h, mid, elo.c10);
       if (!std::isfinite(e.g)) break;
-      if ((e.g > 0) == (elo.g > 0)) lo = mid, elo = e;
-      else hi = mid, ehi = e;
+      if ((e.g > 0) == (elo.g > 0))
+        lo = mid, elo = e;
+      else
+        hi = mid, ehi = e;
       if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
     }
     const auto& best = std::abs(elo.g) <= std::abs(ehi.g) ? elo : ehi;

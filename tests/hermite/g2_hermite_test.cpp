@@ -1,5 +1,7 @@
 // G2 Hermite by triple LA segments (004 §3): end conditions, joint continuity from the
 // published coefficients, α = −1 against Fresnel-integral references, bad input.
+#include "hermite/g2_hermite.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "common/error.hpp"
-#include "hermite/g2_hermite.hpp"
 
 namespace lac::hermite {
 namespace {
@@ -55,7 +56,8 @@ std::vector<Case> cases() {
     const double flip = positive_only ? -1 : 1;
     G2Problem a{{{0, 0}, 0.6 * flip, 0.5}, {{4, 0}, -0.6 * flip, positive_only ? 0.8 : -0.3}, alpha};
     G2Problem b{{{1, 2}, 2.0, 1.2}, {{-1, 3}, 3.0, positive_only ? 0.4 : -0.9}, alpha};
-    G2Problem c{{{0, 0}, 0.5 * flip, 1.0}, {{1, 0}, -0.5 * flip, 1.0}, alpha};  // symmetric: the middle segment is an arc
+    G2Problem c{
+        {{0, 0}, 0.5 * flip, 1.0}, {{1, 0}, -0.5 * flip, 1.0}, alpha};  // symmetric: the middle segment is an arc
     out.push_back({a, "fig7-like"});
     out.push_back({b, "rotated"});
     out.push_back({c, "symmetric (arc)"});
@@ -71,12 +73,14 @@ TEST(G2Hermite, EndConditionsAndJointContinuity) {
       o.solver = solver;
       const G2Problem& p = cs.problem;
       const G2Result r = solve_g2(p, o);
-      SCOPED_TRACE(std::string(cs.what) + " alpha " + std::to_string(p.alpha) + " solver " + std::string(to_string(solver)));
+      SCOPED_TRACE(std::string(cs.what) + " alpha " + std::to_string(p.alpha) + " solver " +
+                   std::string(to_string(solver)));
       ASSERT_TRUE(usable(r.status)) << r.message;
       const double chord = std::abs(p.end.position - p.start.position);
       // Independent of the result's own residuals: sample the curve at both ends.
       const CurveSample s0 = r.curve.at(0), s1 = r.curve.at(1);
-      const double e_pos = std::max(std::abs(s0.position - p.start.position), std::abs(s1.position - p.end.position)) / chord;
+      const double e_pos =
+          std::max(std::abs(s0.position - p.start.position), std::abs(s1.position - p.end.position)) / chord;
       const double e_ang = std::max(std::abs(wrap(s0.theta - p.start.theta)), std::abs(wrap(s1.theta - p.end.theta)));
       const double e_cur = std::max(std::abs(s0.kappa - p.start.kappa), std::abs(s1.kappa - p.end.kappa)) * chord;
       const double e_res = std::max({r.residual_position / chord, r.residual_angle, r.residual_curvature * chord});
@@ -99,8 +103,10 @@ TEST(G2Hermite, EndConditionsAndJointContinuity) {
       }
       // The coefficient form reproduces the end data as well (Eqs. 20–23).
       const PaperSegment first{p.alpha, c[0]}, last{p.alpha, c[2]};
-      EXPECT_NEAR(first.kappa(0) / r.curve.h, p.start.kappa * chord, kJointTol * std::max(1.0, std::abs(p.start.kappa * chord)));
-      EXPECT_NEAR(last.kappa(1) / r.curve.h, p.end.kappa * chord, kJointTol * std::max(1.0, std::abs(p.end.kappa * chord)));
+      EXPECT_NEAR(first.kappa(0) / r.curve.h, p.start.kappa * chord,
+                  kJointTol * std::max(1.0, std::abs(p.start.kappa * chord)));
+      EXPECT_NEAR(last.kappa(1) / r.curve.h, p.end.kappa * chord,
+                  kJointTol * std::max(1.0, std::abs(p.end.kappa * chord)));
       EXPECT_LE(std::abs(wrap(last.phi(1) + r.curve.chord_angle - p.end.theta)), kJointTol);
     }
   }
@@ -162,11 +168,11 @@ TEST(G2Hermite, TripleClothoidMatchesFresnelReference) {
       }
       ASSERT_TRUE(usable(r.status)) << r.message;
       const double chord = std::abs(row.problem.end.position - row.problem.start.position);
-      const double e = std::max({std::abs(r.length - row.length) / chord,
-                                 std::abs(r.curve.at(0.25).kappa - row.kappa_s1) * chord,
-                                 std::abs(r.curve.at(0.75).kappa - row.kappa_s2) * chord,
-                                 std::abs(r.curve.at(0.5).position - row.mid) / chord,
-                                 std::abs(r.curve.at(0.25).position - row.quarter) / chord});
+      const double e =
+          std::max({std::abs(r.length - row.length) / chord, std::abs(r.curve.at(0.25).kappa - row.kappa_s1) * chord,
+                    std::abs(r.curve.at(0.75).kappa - row.kappa_s2) * chord,
+                    std::abs(r.curve.at(0.5).position - row.mid) / chord,
+                    std::abs(r.curve.at(0.25).position - row.quarter) / chord});
       if (e > worst) worst = e, worst_row = i;
       EXPECT_LE(e, kReferenceTol);
     }

@@ -1,4 +1,6 @@
 // S-shaped G1 input (004 §2.4–2.5) and the linear-q segment quadrature.
+#include "hermite/s_curve.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 
 #include "common/error.hpp"
 #include "hermite/detail/linear_q.hpp"
-#include "hermite/s_curve.hpp"
 
 namespace lac::hermite {
 namespace {
@@ -70,7 +71,8 @@ TEST(SCurve, MirroredAndCShapedInputs) {
   EXPECT_TRUE(s.mirrored);
   expect_interpolates(s, S_down);
   // C-shaped (Fig. 2(a)): the curve stays inside the tangent triangle, no inflection.
-  for (const Points& P : {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}}) {
+  for (const Points& P :
+       {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}}) {
     const auto c = solve_s_curve(P, -1.0);
     ASSERT_EQ(c.status, Status::ok) << c.message;
     EXPECT_EQ(c.shape, SCurveShape::c_shaped);
@@ -121,7 +123,8 @@ TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
         const auto a = detail::integrate_tangent(law, seg, evals, panels);
         const double e = std::abs(a - b) / len;
         worst = std::max(worst, e);
-        EXPECT_LE(e, kQuadratureTol) << "alpha " << s.alpha << " q " << s.qa << ".." << s.qb << " len " << len << " panels " << panels;
+        EXPECT_LE(e, kQuadratureTol) << "alpha " << s.alpha << " q " << s.qa << ".." << s.qb << " len " << len
+                                     << " panels " << panels;
       }
     }
   }
