@@ -17,6 +17,7 @@
 #include <iostream>
 #include <numeric>
 #include <optional>
+#include <fstream>
 #include <sstream>
 
 #include "curves/planar/la_integrator.hpp"
@@ -138,6 +139,13 @@ std::string us(double seconds) { return fmt(seconds * 1e6, 3); }
 std::string spread_cell(const lac::io::TimingStats& t) {
   return us(t.median) + " [" + us(t.p10) + ", " + us(t.p90) + "]";
 }
+/// The 1-minute load average (Linux), to state how busy the machine was; empty when unavailable.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string first;
+  return (in >> first) ? first : std::string();
+}
+
 double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
 
 }  // namespace
@@ -238,12 +246,14 @@ int main(int argc, char** argv) {
     }
 
     const std::string command = lac::io::command_line(argc, argv);
+    const std::string load_at_end = load_average();
     std::string settings = "Settings: methods " ;
     for (size_t k = 0; k < methods.size(); ++k) settings += (k ? "; `" : "`") + lac::describe(methods[k].method) + "`";
     settings += "; form " + std::string(lac::to_string(s.form)) + "; " + std::to_string(s.samples) + " samples of about " +
                 fmt(s.sample_seconds * 1e3, 3) + " ms each per cell; polyline " + std::to_string(s.points) +
-                " points. Machine: shared 2-core machine, other builds and tests running (noisy): compare ratios "
-                "within one run, not absolute times across runs.";
+                " points. Machine: shared 2-core machine, other builds and tests running (noisy; 1-minute load "
+                "average " + load_at_end + " at the end of the run): wall-clock medians include other processes' "
+                "time, so compare ratios within one run, not absolute times across runs; bench_p002 gives CPU times.";
     const std::string paper_note =
         "Paper columns: 002 Appendix A, seconds per segment, average of 5 runs, **Mathematica 8 on an Intel Pentium D "
         "2.8 GHz** (the paper's RK4 uses h = 0.001).";
@@ -278,7 +288,7 @@ int main(int argc, char** argv) {
     }
     {  // accuracy of every timed result
       lac::io::Table t;
-      t.columns = {"alpha", "Lambda", "|C|"};
+      t.columns = {"alpha", "Lambda", "abs(C)"};
       for (const auto& meth : methods) {
         t.columns.push_back(meth.label + " endpoint rel. error");
         t.columns.push_back(meth.label + " polyline rel. error");

@@ -40,10 +40,10 @@ enum class Metric { abs_c, x, y, rel };
 constexpr std::array<Metric, 4> kMetrics = {Metric::abs_c, Metric::x, Metric::y, Metric::rel};
 std::string metric_name(Metric m) {
   switch (m) {
-    case Metric::abs_c: return "|dC| absolute";
-    case Metric::x: return "|dx| absolute";
-    case Metric::y: return "|dy| absolute";
-    case Metric::rel: return "|dC|/|C| relative";
+    case Metric::abs_c: return "abs(dC) absolute";
+    case Metric::x: return "abs(dx) absolute";
+    case Metric::y: return "abs(dy) absolute";
+    case Metric::rel: return "abs(dC)/abs(C) relative";
   }
   return "";
 }
@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
     const std::string command = lac::io::command_line(argc, argv);
     {  // readings ranking
       lac::io::Table t;
-      t.columns = {"rank", "reading", "metric", "cells", "spread within an h column", "worst |log10(ours/paper)|",
+      t.columns = {"rank", "reading", "metric", "cells", "spread within an h column", "worst abs(log10(ours/paper))",
                    "median log10(ours/paper)", "median at h=0.1", "median at h=0.01", "median at h=0.001"};
       int rank = 0;
       for (const auto& s : scores) {
@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
 
     {  // main table: paper beside ours (best reading), GK column
       lac::io::Table t;
-      t.columns = {"alpha", "Lambda", "|C|", "method", "paper error", "ours |dC|", "ours |dC|/|C|", "ours/paper",
+      t.columns = {"alpha", "Lambda", "abs(C)", "method", "paper error", "ours abs(dC)", "ours abs(dC)/abs(C)", "ours/paper",
                         "order paper", "order ours", "ours estimate", "paper's reference"};
       std::string flagged;
       int flagged_cells = 0;
@@ -375,8 +375,8 @@ int main(int argc, char** argv) {
         std::string flag = "ok";
         if (floor_row[i]) {
           ++flagged_cells;
-          flag = "WRONG: a double G-K is good to ~1e-16 |C| (ours: " + sci(ge / ref_theta.abs_c, 2) + "); paper's is " +
-                 sci(pr.gk / ref_theta.abs_c, 2) + " |C|, equal to its RK4 h=0.001 error within " +
+          flag = "WRONG: a double G-K is good to ~1e-16 abs(C) (ours: " + sci(ge / ref_theta.abs_c, 2) + "); paper's is " +
+                 sci(pr.gk / ref_theta.abs_c, 2) + " abs(C), equal to its RK4 h=0.001 error within " +
                  fmt(std::max(pr.gk, pr.rk4[2]) / std::min(pr.gk, pr.rk4[2]), 3) + "x";
           flagged += "- alpha = " + pr.alpha_text + ", Lambda = " + fmt(pr.lambda) +
                      ": the paper's reference (IGF) was off by about " + sci(pr.gk, 2) + " = " +

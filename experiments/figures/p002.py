@@ -60,10 +60,10 @@ def truncation_figure(results, out):
             gk = [r for r in main if r["alpha"] == a and r["Lambda"] == lam and not r["method"].startswith("rk4")]
             if gk:
                 ax.axhline(num(gk[0]["paper error"]), color="k", ls="-.", lw=1, label="002 G-K")
-                ours_gk = num(gk[0]["ours |dC|"])
+                ours_gk = num(gk[0]["ours abs(dC)"])
                 if ours_gk > 0:
                     ax.axhline(ours_gk, color="C3", ls="-.", lw=1, label="ours G-K")
-                abs_c = num(gk[0]["|C|"])
+                abs_c = num(gk[0]["abs(C)"])
                 ax.axhline(2.2e-16 * abs_c, color="0.6", ls=":", lw=1, label="eps |C|")
             if hs:
                 h0, e0 = hs[-1], paper[-1][1]
