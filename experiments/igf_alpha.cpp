@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   doc.notes = "Worst igf error over all cases: " + lac::io::sci(overall, 2) + "; fell back: " +
               std::to_string(total_fell_back) + "; not usable: " + std::to_string(total_not_ok) +
               ". 002 states that its incomplete-gamma closed form can be used for certain α only (its abstract and "
-              "§4), and its Appendix B shows a 0.51 disagreement between Gauss–Kronrod and its closed-form values at "
+              "results section), and its Appendix B shows a 0.51 disagreement between Gauss–Kronrod and its closed-form values at "
               "α = 10/9, Λ = 100. Here every α on the whole domain, including a ≤ 0 (0 ≤ α < 1) and |a| > 10 near "
               "α = 1, is served by a form of the closed form.";
   lac::io::write_result_table(out, "igf_alpha", doc, t);

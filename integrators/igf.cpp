@@ -164,7 +164,7 @@ Attempt segment_series(const Curve& c, double theta0, double theta1, long max_pi
     }
     const double rho = std::exp(c.log_rho(t));
     r.value += std::polar(rho, t) * sum;
-    r.error += 8 * kEps * rho * magnitude;
+    r.error += 4 * kEps * rho * magnitude;
     r.converged = r.converged && converged;
     ++r.pieces;
     t = next;

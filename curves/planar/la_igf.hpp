@@ -11,7 +11,7 @@ namespace lac {
 
 struct Igf {
   static constexpr std::string_view name = "igf";
-  /// Relative accuracy asked of each C(θ1) − C(θ0); see IgfOptions (default 2.5e-13).
+  /// Relative accuracy asked of each C(θ1) − C(θ0); see IgfOptions (default 1e-12).
   double tol = IgfOptions{}.tol;
   /// Segment-series piece cap before the Gauss–Kronrod fallback; see IgfOptions.
   long max_pieces = IgfOptions{}.max_pieces;
