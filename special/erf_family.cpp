@@ -78,7 +78,8 @@ InverseResult hybrid_003(double y, double newton_limit, double bound, F f, Fprim
     for (int it = 1; it <= kMaxInverseIterations; ++it) {
       const double step = (f(x) - y) / fprime(x);
       x -= step;
-      if (std::abs(step) <= 4.0 * kEps * std::abs(x)) return {x, it, Status::ok};
+      if (std::abs(step) <= 4.0 * kEps * std::abs(x) || std::abs(step) < std::numeric_limits<double>::min())
+        return {x, it, Status::ok};
     }
     return {x, kMaxInverseIterations, Status::max_iterations};
   }

@@ -78,8 +78,7 @@ KappaSolution QuadraticLaCurve::solve_kappa(double s) const {
 double QuadraticLaCurve::theta_at_s(double s) const {
   const KappaSolution k = solve_kappa(s);
   if (k.kappa == 0) return theta_hi_;
-  const double theta = theta_at_log_kappa(k.log_kappa);
-  return k.kappa < 0 ? 2.0 * theta_hi_ - theta : theta;
+  return theta_at_log_kappa(k.log_kappa);  // past the inflection θ(s_i + t) = θ(s_i − t)
 }
 
 CurvePoint QuadraticLaCurve::frame_at(double s) const {
@@ -88,12 +87,9 @@ CurvePoint QuadraticLaCurve::frame_at(double s) const {
   p.s = s;
   p.kappa = k.kappa;
   p.rho = k.kappa == 0 ? kInf : 1.0 / k.kappa;
-  if (k.kappa == 0) {
-    p.theta = theta_hi_;
-  } else {
-    const double theta = theta_at_log_kappa(k.log_kappa);
-    p.theta = k.kappa < 0 ? 2.0 * theta_hi_ - theta : theta;
-  }
+  // Point symmetry about the inflection: C(s_i + t) − C(s_i) = −(C(s_i − t) − C(s_i)), so the
+  // tangent is even, θ(s_i + t) = θ(s_i − t), and κ = θ' is odd.
+  p.theta = k.kappa == 0 ? theta_hi_ : theta_at_log_kappa(k.log_kappa);
   return p;
 }
 

@@ -12,8 +12,9 @@
 // Domain: s ∈ (s(κ→∞), s(κ→0)). γ < 0 has both ends finite (003 property 3); γ = 0 is the LA
 // curve of MATH.md §1; γ > 0 is unbounded both ways. At a finite s(κ→0) the curvature reaches
 // 0 (inflection). With QuadraticOptions::through_inflection the curve continues past it
-// point-symmetrically (κ(s_i + t) = −κ(s_i − t), signed curvature, the LCG of |κ| is the
-// same parabola) up to 2 s_i − s(κ→∞); otherwise s(κ→0) is an open end.
+// point-symmetrically (C(s_i + t) − C(s_i) = C(s_i) − C(s_i − t): θ(s_i + t) = θ(s_i − t),
+// signed κ(s_i + t) = −κ(s_i − t), the LCG of |κ| is the same parabola) up to
+// 2 s_i − s(κ→∞); otherwise s(κ→0) is an open end.
 #include <string_view>
 
 #include "common/status.hpp"
