@@ -81,8 +81,9 @@ double QuadraticLaCurve::theta_at_s(double s) const {
   return theta_at_log_kappa(k.log_kappa);  // past the inflection θ(s_i + t) = θ(s_i − t)
 }
 
-CurvePoint QuadraticLaCurve::frame_at(double s) const {
+CurvePoint QuadraticLaCurve::frame_at(double s, KappaSolution* solution) const {
   const KappaSolution k = solve_kappa(s);
+  if (solution) *solution = k;
   CurvePoint p;
   p.s = s;
   p.kappa = k.kappa;

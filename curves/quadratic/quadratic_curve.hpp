@@ -79,7 +79,8 @@ class QuadraticLaCurve {
   double theta_at_s(double s) const;
 
   /// s, θ, κ (signed), ρ = 1/κ (±inf at the inflection); position left 0 (see quadratic_position.hpp).
-  CurvePoint frame_at(double s) const;
+  /// `solution` (optional) receives κ(s)'s iterations and status.
+  CurvePoint frame_at(double s, KappaSolution* solution = nullptr) const;
 
   /// Throws InputError naming `name` unless s is in s_domain() (the inflection point itself is
   /// allowed when through_inflection is on).

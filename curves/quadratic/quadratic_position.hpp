@@ -3,7 +3,9 @@
 // or run-time by name (AnyQuadrature from integrators/registry.hpp). s-form:
 //   C(s) = ∫₀^s e^(iθ(t)) dt,  θ(t) from κ(t) (quadratic_curve.hpp),
 // whose integrand has modulus 1 and stays smooth through the inflection (MATH.md §1's reason
-// for the s-form). The tangent is (cos θ, sin θ) of the returned point.
+// for the s-form). The tangent is (cos θ, sin θ) of the returned point. A κ(s) status other
+// than ok at a returned point (003's hybrid inverse outside its range) is merged into that
+// point's status; inside the quadrature the integrand cannot report it.
 #include <complex>
 #include <vector>
 
@@ -26,8 +28,10 @@ template <QuadratureMethod M>
 PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method) {
   method.validate();
   PositionResult r;
-  r.point = c.frame_at(s);
+  KappaSolution k;
+  r.point = c.frame_at(s, &k);
   r.form = Form::s;
+  detail::merge_status(r, k.status, "kappa(s): " + std::string(to_string(k.status)));
   auto piece = method.integrate(detail::QuadraticSFormIntegrand{&c}, 0.0, s);
   r.point.position = piece.value;
   r.error_estimate = piece.error_estimate;
@@ -52,7 +56,9 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
   for (int k = 0; k < n; ++k) {
     const double s = k + 1 == n ? s1 : s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n - 1);
     auto& r = out[static_cast<size_t>(k)];
-    r.point = c.frame_at(s);
+    KappaSolution ks;
+    r.point = c.frame_at(s, &ks);
+    detail::merge_status(acc, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
     auto piece = method.integrate(f, prev, s);
     pos += piece.value;
     acc.error_estimate += piece.error_estimate;
