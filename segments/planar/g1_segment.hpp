@@ -37,7 +37,7 @@ struct ControlTriangle {
 };
 
 /// Default position method of the segment solvers (segment_quadrature.hpp): Gauss–Kronrod at
-/// relative tolerance 1e-14 (one 21-point panel for most trial curves), tanh-sinh near the
+/// relative tolerance 1e-13 (one 21-point panel for most trial curves), tanh-sinh near the
 /// singular ends of the LA domain.
 SegmentQuadrature default_segment_integrator();
 

@@ -19,7 +19,7 @@ namespace lac {
 
 struct SegmentQuadrature {
   static constexpr std::string_view name = "gk+tanh-sinh";
-  double tol = 1e-14;             ///< relative tolerance of both rules
+  double tol = 1e-13;             ///< relative tolerance of both rules
   unsigned gk_max_depth = 4;      ///< Gauss–Kronrod bisection depth before falling back
   std::size_t ts_max_levels = 12; ///< tanh-sinh refinement levels (Boost default 15)
 
