@@ -64,14 +64,15 @@ def plot_set(curves, figure, out):
         rho = 1 / np.abs(c["kappa"])
         for p in (0, 1):
             m = piece == p
-            if p == 1:  # include the joint so that each piece has its own samples
+            if p == 1:  # the joint (last sample of piece 0) starts piece 1 as well
                 m = m.copy()
+                m[np.argmax(m) - 1] = True
             if m.sum() < 5:
                 continue
             s, rr = c["s"][m], rho[m]
-            drho = np.gradient(rr, s)
+            drho = np.gradient(rr, s, edge_order=2)  # one-sided second order at the piece ends
             ok = np.abs(drho) > 0
-            ax_l.plot(np.log(rr[ok][2:-2]), np.log(rr[ok][2:-2] / np.abs(drho[ok][2:-2])), style, color=col, lw=2,
+            ax_l.plot(np.log(rr[ok]), np.log(rr[ok] / np.abs(drho[ok])), style, color=col, lw=2,
                       label=label(key) if p == 0 else None)
         ax_k.plot(c["s"], c["kappa"], style, color=col, lw=2, label=label(key))
         if not mono:
