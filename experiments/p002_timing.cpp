@@ -68,7 +68,7 @@ bool registry_has(std::string_view name) {
 }
 
 // A measurement whose single call needs more integrand evaluations than this is not timed (it would
-// take minutes): Boost 1.74's G-K recursion never meets a tight tolerance on short pieces (docs/p002.md).
+// take minutes), e.g. Boost 1.74's recursive G-K on short pieces before commit 7ffc20e (docs/p002.md).
 constexpr double kMaxEvaluations = 2e6;
 
 struct Measurement {
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_dir, "Output folder")->capture_default_str();
   app.add_option("--methods", methods_text,
                  "Comma-separated methods name[:h=X][:tol=Y] (default: rk4:h=0.001, igf if registered, "
-                 "gauss-kronrod:tol=1e-10, rk45; the first is the reference of the ratios)");
+                 "gauss-kronrod, rk45 at their default tolerances; the first is the reference of the ratios)");
   app.add_option("--candidates", candidates_text, "Configurations searched for the fastest one meeting --target "
                                                   "(igf is added when registered)")->capture_default_str();
   app.add_option("--target", target, "Relative endpoint error the best method must meet on every row")->capture_default_str();
@@ -184,8 +184,7 @@ int main(int argc, char** argv) {
     if (!(target > 0)) lac::throw_input_error("exp_p002_timing", "target", target, "(0, inf)");
     s.form = lac::parse_form(form_text);
     const bool have_igf = registry_has("igf");
-    // G-K at tol 1e-10: the library default 1e-14 cannot finish short polyline pieces (kMaxEvaluations).
-    if (methods_text.empty()) methods_text = std::string("rk4:h=0.001,") + (have_igf ? "igf," : "") + "gauss-kronrod:tol=1e-10,rk45";
+    if (methods_text.empty()) methods_text = std::string("rk4:h=0.001,") + (have_igf ? "igf," : "") + "gauss-kronrod,rk45";
     if (have_igf) candidates_text += ",igf";
     auto methods = parse_methods(methods_text);
     const auto candidates = parse_methods(candidates_text);
@@ -260,7 +259,7 @@ int main(int argc, char** argv) {
 
     auto timing_table = [&](bool polyline_kind) {
       lac::io::Table t;
-      t.columns = {"alpha", "Lambda", "paper RK4 s", "paper IGF s", "paper G-K s"};
+      t.columns = {"alpha", "Lambda", "paper RK4 s (Mathematica 8, Pentium D 2.8 GHz)", "paper IGF s (same)", "paper G-K s (same)"};
       for (const auto& meth : methods) t.columns.push_back(meth.label + " us");
       for (size_t i = 0; i < rows.size(); ++i) {
         std::vector<std::string> r = {rows[i].alpha_text, paper[i].at("lambda"), paper[i].at("rk4_seconds"),
