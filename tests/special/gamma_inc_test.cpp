@@ -126,6 +126,12 @@ TEST(GammaInc, SpecialValues) {
     EXPECT_NEAR(gamma_inc(0.5, x).value.real(), expected, 1e-14 * expected) << x;
   }
   EXPECT_NEAR(gamma_inc(3.0, 0.0).value.real(), 2.0, 1e-15);
+  // Differences to z = 0 (a > 0): Γ(a, z) − Γ(a) = −γ(a, z), and γ(1, z) = 1 − e^(−z) exactly.
+  for (cplx z : {cplx(0.0, 0.3), cplx(0.0, -1.2), cplx(0.5, 2.0), cplx(0.0, 8.0)}) {
+    const cplx lower = -std::expm1(-z.real()) + (std::exp(-z.real()) * (1.0 - std::polar(1.0, -z.imag())));
+    EXPECT_LE(std::abs(gamma_inc_difference(1.0, z, 0.0).value + lower), 1e-14 * std::abs(lower)) << z;
+    EXPECT_LE(std::abs(gamma_inc_difference(1.0, 0.0, z).value - lower), 1e-14 * std::abs(lower)) << z;
+  }
 }
 
 TEST(GammaInc, RegionsAgreeWhereTheyOverlap) {
