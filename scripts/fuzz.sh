@@ -5,10 +5,11 @@
 # (distinct findings) with notes. See docs/robustness.md.
 #
 # Usage: scripts/fuzz.sh [--short] [--runs N] [--max-time S] [--targets "cli la_curve ..."]
-#                        [--no-build] [--out DIR]
+#                        [--no-build] [--report-only] [--out DIR]
 #   default      10^6 executions per target (-runs=1000000), at most 3 h each
 #   --short      2·10^4 executions per target, at most 10 min each (tests / CI)
 #   --max-time   wall-clock cap per target in seconds (the table reports executions reached)
+#   --report-only  rewrite the results from the last run's build-fuzz/fuzz-summary.tsv (same options)
 # Findings: libFuzzer's crash/timeout/oom inputs and the harness's property violations (one input
 # per distinct message, LAC_FUZZ_CONTINUE mode) are saved under fuzz/findings/fuzz_<target>/.
 # Exit status 0 when no target has a finding, 3 otherwise (1 on build errors).
@@ -20,6 +21,7 @@ TARGETS=""
 BUILD=1
 OUT=results
 MODE=full
+REPORT_ONLY=0
 while (($#)); do
   case "$1" in
     --short) RUNS=20000; MAX_TIME=600; MODE=short ;;
@@ -27,6 +29,7 @@ while (($#)); do
     --max-time) MAX_TIME=$2; shift ;;
     --targets) TARGETS=$2; shift ;;
     --no-build) BUILD=0 ;;
+    --report-only) REPORT_ONLY=1; BUILD=0 ;;
     --out) OUT=$2; shift ;;
     *) echo "fuzz.sh: unknown argument $1 (see the header of scripts/fuzz.sh)" >&2; exit 2 ;;
   esac
@@ -35,6 +38,7 @@ done
 COMMAND="scripts/fuzz.sh"
 [ "$MODE" = short ] && COMMAND+=" --short"
 [ "$RUNS" != 1000000 ] && [ "$RUNS" != 20000 ] && COMMAND+=" --runs $RUNS"
+[ "$MAX_TIME" != 10800 ] && [ "$MAX_TIME" != 600 ] && COMMAND+=" --max-time $MAX_TIME"
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -62,7 +66,8 @@ export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=0:allocator_m
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LAC_FUZZ_CONTINUE=1
 summary="$BUILD_DIR/fuzz-summary.tsv"
-: >"$summary"
+((REPORT_ONLY)) && TARGETS=""
+((REPORT_ONLY)) || : >"$summary"
 status=0
 for t in $TARGETS; do
   bin="$BUILD_DIR/fuzz/fuzz_$t"
@@ -149,7 +154,7 @@ with open(os.path.join(out, "robustness.md"), "w") as f:
     f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang, libFuzzer fork mode) for "
             f"-runs={runs} executions or at most {max_time} s, whichever came first; `executions` is what it reached. "
             "crashes = distinct sanitizer reports, unexpected exception types, errors without a parameter name, "
-            "CLI exit status 1; hangs = calls over the per-call bound (LAC_FUZZ_CALL_SECONDS, default 1 s) or "
+            "CLI exit status 1; hangs = calls over the per-call CPU-time bound (LAC_FUZZ_CALL_SECONDS, default 1 s) or "
             "inputs over libFuzzer's -timeout=20; nan_results = NaN/inf in a successful result. Counts are distinct "
             "findings (messages compared with their numbers removed); inputs are in fuzz/findings/<target>/. "
             "Properties and findings: docs/robustness.md.\n\n")

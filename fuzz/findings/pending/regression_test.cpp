@@ -1,0 +1,81 @@
+// Regression tests for the fuzzing findings of docs/robustness.md that still wait for their fix.
+// Move into tests/robustness/ (and delete from here) once the fix is in; each test checks the
+// correct behaviour, so it fails until then. Inputs are the ones the fuzzers saved
+// (fuzz/findings/fuzz_<target>/), reduced to the call that goes wrong.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <sys/wait.h>
+
+#include "common/error.hpp"
+#include "curves/planar/la_integrator.hpp"
+
+namespace {
+
+/// Either a finite value or an InputError naming `parameter`; never NaN.
+template <class Call>
+void expect_finite_or_input_error(Call call, const std::string& parameter, const std::string& what) {
+  try {
+    const double v = call();
+    EXPECT_TRUE(std::isfinite(v)) << what << " returned " << v << " instead of an InputError naming " << parameter;
+  } catch (const lac::InputError& e) {
+    EXPECT_EQ(e.parameter(), parameter) << what << ": " << e.what();
+  }
+}
+
+// Finding R1 (fuzz_la_curve): closed-form conversions return NaN instead of rejecting the argument.
+TEST(FuzzRegression, LaCurveConversionsNeverReturnNan) {
+  const lac::LaCurve big(1e300, 1e300);
+  expect_finite_or_input_error([&] { return big.s_at_theta(1e-300); }, "theta", "LaCurve(1e300, 1e300).s_at_theta(1e-300)");
+  const lac::LaCurve steep(-DBL_MAX, 5);
+  expect_finite_or_input_error([&] { return steep.s_at_theta(-6.9388939039072284e-18); }, "theta",
+                               "LaCurve(-DBL_MAX, 5).s_at_theta(-6.9e-18)");
+  const lac::LaCurve clothoid_like(0, 7.945556640625);
+  expect_finite_or_input_error([&] { return clothoid_like.theta_at_s(DBL_MAX); }, "s", "LaCurve(0, 7.95).theta_at_s(DBL_MAX)");
+  const lac::LaCurve spiral(1, DBL_MAX);
+  expect_finite_or_input_error([&] { return spiral.rho_at_theta(2); }, "theta", "LaCurve(1, DBL_MAX).rho_at_theta(2)");
+}
+
+// Finding R2 (fuzz_la_curve): Gauss–Kronrod returns a usable status with an infinite error estimate.
+TEST(FuzzRegression, UsablePositionHasFiniteErrorEstimate) {
+  const lac::GaussKronrod gk;
+  for (auto [alpha, lambda, p, t] : {std::tuple{1e-300, 0.0, lac::Parameter::theta, 1e300},
+                                     std::tuple{0.0, 4.9406564584124654e-324, lac::Parameter::s, DBL_MAX}}) {
+    const lac::LaCurve c(alpha, lambda);
+    try {
+      const lac::PositionResult r = lac::position_at(c, p, t, gk);
+      if (lac::usable(r.status)) {
+        EXPECT_TRUE(std::isfinite(r.error_estimate)) << "alpha " << alpha << " lambda " << lambda << " t " << t;
+        EXPECT_TRUE(std::isfinite(std::abs(r.point.position)));
+      }
+    } catch (const lac::InputError& e) {
+      EXPECT_FALSE(e.parameter().empty());
+    }
+  }
+}
+
+int run_lac(const std::string& args, std::string* out) {
+  const std::string cmd = std::string(LAC_BINARY_DIR) + "/lac " + args + " 2>&1 >/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, pipe.get())) out->append(buf, n);
+  const int status = pclose(pipe.release());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Finding R3 (fuzz_cli): a point count beyond memory is an internal error (exit 1, std::bad_alloc)
+// instead of invalid input naming the option (exit 2).
+TEST(FuzzRegression, CliRejectsHugePointCounts) {
+  for (const std::string args : {"eval --alpha 0.5 --lambda 1 --theta -0.5 --points 2147483647",
+                                 "g1 --points '0,0 1,0 2,1' --alpha 1 --points-out 2147483647"}) {
+    std::string err;
+    EXPECT_EQ(run_lac(args, &err), 2) << args << ": " << err;
+    EXPECT_NE(err.find("points"), std::string::npos) << err;
+  }
+}
+
+}  // namespace
