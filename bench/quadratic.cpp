@@ -66,6 +66,16 @@ void BM_Polyline1000(benchmark::State& state) {
 }
 BENCHMARK(BM_Polyline1000)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
+void BM_HermitePolyline1000(benchmark::State& state) {
+  const auto& p = kSets[state.range(0)];
+  const QuadraticLaCurve c(p[0], p[1], p[2]);
+  const auto d = c.s_domain();
+  const double s0 = std::isfinite(d.lo) ? 0.99 * d.lo : -3.0, s1 = std::isfinite(d.hi) ? 0.99 * d.hi : 3.0;
+  for (auto _ : state) benchmark::DoNotOptimize(lac::hermite_polyline(c, s0, s1, 1000));
+  state.SetLabel("hermite_polyline");
+}
+BENCHMARK(BM_HermitePolyline1000)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
+
 void BM_ErfiInverse(benchmark::State& state) {
   const auto method = state.range(0) ? ErfInverseMethod::hybrid_003 : ErfInverseMethod::ours;
   std::vector<double> ys;

@@ -75,6 +75,16 @@ KappaSolution QuadraticLaCurve::solve_kappa(double s) const {
   return out;
 }
 
+KappaSolution QuadraticLaCurve::solve_kappa_near(double s, double log_kappa_guess) const {
+  check_s(s, "s");
+  if (s == s_hi_) return {-kInf, 0.0, 0, Status::ok};
+  if (options_.inverse != special::ErfInverseMethod::ours || !std::isfinite(log_kappa_guess)) return solve_kappa(s);
+  const bool mirrored = s > s_hi_;
+  const double base_s = mirrored ? 2.0 * s_hi_ - s : s;
+  const auto sol = s_integral_.polish(-lambda_ * base_s, log_kappa_guess, options_.max_iterations);
+  return {sol.u, mirrored ? -std::exp(sol.u) : std::exp(sol.u), sol.iterations, sol.status};
+}
+
 double QuadraticLaCurve::theta_at_s(double s) const {
   const KappaSolution k = solve_kappa(s);
   if (k.kappa == 0) return theta_hi_;

@@ -15,6 +15,7 @@
 // point-symmetrically (C(s_i + t) − C(s_i) = C(s_i) − C(s_i − t): θ(s_i + t) = θ(s_i − t),
 // signed κ(s_i + t) = −κ(s_i − t), the LCG of |κ| is the same parabola) up to
 // 2 s_i − s(κ→∞); otherwise s(κ→0) is an open end.
+#include <cmath>
 #include <string_view>
 
 #include "common/status.hpp"
@@ -76,6 +77,10 @@ class QuadraticLaCurve {
   /// κ(s) for s in s_domain() (InputError otherwise), with iterations and status.
   KappaSolution solve_kappa(double s) const;
   double kappa_at_s(double s) const { return solve_kappa(s).kappa; }
+  /// κ(s) by Halley from a nearby log κ (e.g. the previous point of a polyline): no erfi⁻¹ start.
+  KappaSolution solve_kappa_near(double s, double log_kappa_guess) const;
+  /// d(log|κ|)/ds = −Λ e^(−E(u)) at u = log|κ| (sign flips past the inflection).
+  double dlog_kappa_ds(double log_kappa) const { return -lambda_ * std::exp(-s_integral_.exponent(log_kappa)); }
   double theta_at_s(double s) const;
 
   /// s, θ, κ (signed), ρ = 1/κ (±inf at the inflection); position left 0 (see quadratic_position.hpp).

@@ -18,6 +18,7 @@ namespace {
 constexpr double kMethodAgreement = 1e-9;  // rk4 h = 1e-3 (Simpson, ~h⁴), rk45 1e-12 vs GK 1e-14
 constexpr double kGammaZeroTol = 1e-8;     // |C_quadratic(γ = ±1e-10) − C_LA| (O(γ) plus quadrature)
 constexpr double kSymmetryTol = 1e-12;     // point symmetry about the inflection, plus the error estimates
+constexpr double kHermiteTol = 1e-8;       // hermite_polyline, 1000 points, vs GK at 1e-14
 constexpr double kLcgTol = 1e-5;           // LCG from finite differences of positions (h = 0.004, H = 0.001)
 
 TEST(QuadraticPosition, RegistryMethodsAgree) {
@@ -106,6 +107,34 @@ TEST(QuadraticPosition, LcgFromProducedPointsIsTheParabola) {
     }
   }
   std::cout << "  LCG from the produced points vs the parabola: worst deviation " << worst << "\n";
+}
+
+}  // namespace
+}  // namespace lac
+
+namespace lac {
+namespace {
+
+TEST(QuadraticPosition, HermitePolylineMatchesGaussKronrod) {
+  const double sets[][3] = {{-1, -0.5, 1}, {1, 1, 1}, {3, -1, 1}, {1, -30, 0.5}, {0, 0, 1}, {-1, 0.5, 1}};
+  double worst = 0;
+  for (const auto& p : sets) {
+    const QuadraticLaCurve c(p[0], p[1], p[2]);
+    const auto d = c.s_domain();
+    const double s0 = std::isfinite(d.lo) ? 0.99 * d.lo : -3.0, s1 = std::isfinite(d.hi) ? 0.99 * d.hi : 3.0;
+    const auto fast = hermite_polyline(c, s0, s1, 1000);
+    for (int k = 0; k < 11; ++k) {
+      const auto& f = fast[static_cast<size_t>(k * 999 / 10)];
+      const auto ref_point = position_at(c, f.point.s, GaussKronrod{});
+      const double err = std::abs(f.point.position - ref_point.point.position);
+      worst = std::max(worst, err);
+      EXPECT_LE(err, f.error_estimate + 1e-12) << p[0] << " " << p[1] << " k=" << k;  // the bound holds
+      EXPECT_LE(err, kHermiteTol) << p[0] << " " << p[1] << " k=" << k;
+      EXPECT_NEAR(f.point.kappa, ref_point.point.kappa, 1e-13 * f.point.kappa);
+      EXPECT_EQ(f.status, Status::ok);
+    }
+  }
+  std::cout << "  hermite_polyline (1000 points) vs Gauss-Kronrod: worst position error " << worst << "\n";
 }
 
 }  // namespace

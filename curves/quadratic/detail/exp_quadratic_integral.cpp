@@ -127,9 +127,16 @@ InverseSolution ExpQuadraticIntegral::inverse(double target, special::ErfInverse
     return {target * LaCurve::log1p_ratio(-alpha_ * target), 0, Status::ok};
   }
   if (method == special::ErfInverseMethod::hybrid_003) return inverse_003(target);
+  int start_iterations = 0;
+  const double u = start_ours(target, start_iterations);
+  InverseSolution out = polish(target, std::isfinite(u) ? u : 0.0, max_iterations);
+  out.iterations += start_iterations;
+  return out;
+}
+
+InverseSolution ExpQuadraticIntegral::polish(double target, double u, int max_iterations) const {
   InverseSolution out;
-  double u = start_ours(target, out.iterations);
-  if (!std::isfinite(u)) u = 0;
+  if (gamma_ == 0) return {target * LaCurve::log1p_ratio(-alpha_ * target), 0, Status::ok};
   // Halley on f(u) = F(u) − target: f' = e^E, f''/f' = E'(u) = 2γu − α. Bracket by sign of f.
   double lo = -kInf, hi = kInf;
   for (int it = 1; it <= max_iterations; ++it) {

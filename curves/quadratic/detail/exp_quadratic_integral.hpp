@@ -43,6 +43,9 @@ class ExpQuadraticIntegral {
   /// ours: erfi⁻¹ / erfc⁻¹ in log form for the start, then Halley on F with a bracket.
   /// hybrid_003: 003's formula with its hybrid inverses, unscaled, no polishing.
   InverseSolution inverse(double target, special::ErfInverseMethod method, int max_iterations) const;
+  /// Safeguarded Halley on F(u) − target from a given start (used by inverse() and by marching
+  /// polylines, whose previous point is a good start).
+  InverseSolution polish(double target, double u, int max_iterations) const;
 
  private:
   double start_ours(double target, int& iterations) const;
