@@ -77,9 +77,9 @@ void setup(CLI::App& app) {
   th->excludes(so);
   so->excludes(th);
   sub->add_option("--form", a->form, "Position integral: theta | s | auto")->capture_default_str();
-  sub->add_option("--integrator", a->integrator, "rk4 | rk45 | gauss-kronrod")->capture_default_str();
+  sub->add_option("--integrator", a->integrator, "rk4 | rk45 | gauss-kronrod | igf")->capture_default_str();
   sub->add_option("--h", a->h, "rk4 step in the integration variable (default 0.001)");
-  sub->add_option("--tol", a->tol, "Tolerance of the adaptive methods (rk45 default 1e-12, gauss-kronrod 1e-14)");
+  sub->add_option("--tol", a->tol, "Tolerance of rk45 (default 1e-12), gauss-kronrod (1e-14) or igf (2.5e-13)");
   sub->add_option("--points", a->points, "Number of points from the reference point (0) to the given theta/s")->capture_default_str();
   a->format = add_format_option(*sub, {"json", "csv", "table"});
   sub->callback([a, th, so] {

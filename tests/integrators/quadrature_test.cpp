@@ -53,6 +53,13 @@ TEST(Rk4Quadrature, ErrorEstimateTracksTrueError) {
   }
 }
 
+TEST(Rk4Quadrature, WholeNumberOfStepsDespiteRounding) {
+  auto f = [](double t) { return t; };
+  // 0.3 / 0.1 is 2.9999999999999996 in double; 0.0010000000000000009 / 0.001 slightly above 1.
+  EXPECT_EQ(Rk4{.h = 0.1}.integrate(f, 0.0, 0.3).evaluations, 2 * 3 + 1 + 1);  // odd n: one extra midpoint
+  EXPECT_EQ(Rk4{.h = 0.001}.integrate(f, 0.0, 0.0010000000000000009).evaluations, 2 * 1 + 1 + 1);  // n = 1: f(a) once more
+}
+
 TEST(Rk4Quadrature, ReversedIntervalNegates) {
   auto f = [](double t) { return t * t; };
   EXPECT_NEAR(Rk4{}.integrate(f, 1.0, 0.0).value, -1.0 / 3.0, 1e-15);

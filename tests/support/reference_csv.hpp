@@ -33,6 +33,7 @@ inline CsvTable read_reference_csv(const std::string& file_name) {
     std::stringstream ss(line);
     std::string cell;
     while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();  // getline drops a trailing empty cell
     if (t.header.empty())
       t.header = std::move(cells);
     else
