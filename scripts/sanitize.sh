@@ -40,7 +40,7 @@ if grep -q "LeakSanitizer does not work" <<<"$probe"; then
   leaks=0
   echo "sanitize: LeakSanitizer unavailable here (ptrace); leak checks off" >&2
 fi
-export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=$leaks:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=$leaks"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 
 status=0
