@@ -13,6 +13,8 @@
 
 #include "common/error.hpp"
 #include "curves/planar/la_integrator.hpp"
+#include "segments/planar/g1_segment.hpp"
+#include "special/incomplete_gamma.hpp"
 
 namespace {
 
@@ -55,6 +57,29 @@ TEST(FuzzRegression, UsablePositionHasFiniteErrorEstimate) {
     } catch (const lac::InputError& e) {
       EXPECT_FALSE(e.parameter().empty());
     }
+  }
+}
+
+// Finding R7 (fuzz_special): Boost's overflow_error escapes Γ(a, 0) for tiny a > 0.
+TEST(FuzzRegression, GammaIncOverflowIsAStatus) {
+  for (double a : {5e-324, 1e-310}) {
+    lac::special::GammaIncResult r;
+    EXPECT_NO_THROW(r = lac::special::gamma_inc(a, {-0.0, -0.0})) << "a = " << a;
+    if (r.status == lac::Status::ok) EXPECT_TRUE(std::isfinite(std::abs(r.value)));
+    EXPECT_NO_THROW(lac::special::gamma_inc_difference(a, {-0.0, -0.0}, {-5.562744140625, -8})) << "a = " << a;
+  }
+}
+
+// Finding R8 (fuzz_planar_segments): an overflowing triangle gives a usable segment of infinite length.
+TEST(FuzzRegression, OverflowingTriangleIsRejectedOrFinite) {
+  const lac::ControlTriangle t{{-DBL_MAX, 7.812255859375}, {3.392578125, 1e300}, {-3.437744140625, 7.999755859375}};
+  lac::SegmentOptions o;
+  o.solver = lac::RootMethod::ceres;
+  try {
+    const lac::G1Segment g = lac::solve_g1(t, 0.0, o);
+    if (lac::usable(g.status)) EXPECT_TRUE(std::isfinite(g.length));
+  } catch (const lac::InputError& e) {
+    EXPECT_FALSE(e.parameter().empty());
   }
 }
 
