@@ -1,6 +1,8 @@
 // `lac eval` end to end: JSON keys, and exit status 2 with one line naming the parameter.
 #include <gtest/gtest.h>
 
+#include "tests/support/run_cli.hpp"
+
 #include <array>
 #include <cstdio>
 #include <memory>
@@ -9,24 +11,10 @@
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out;
-};
-
-Run run(const std::string& args) {
-  const std::string cmd = std::string(LAC_BINARY_DIR) + "/lac " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-  const int status = pclose(pipe.release());
-  return {WEXITSTATUS(status), out};
-}
+using lac::test::run_lac;
 
 TEST(CliEval, JsonPointHasTheDocumentedKeys) {
-  auto r = run("eval --alpha 2 --lambda 1 --theta 1 --format json");
+  auto r = run_lac("eval --alpha 2 --lambda 1 --theta 1 --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"x", "y", "s", "theta", "rho", "kappa", "evaluations", "seconds"}) EXPECT_TRUE(j.contains(key)) << key;
@@ -35,7 +23,7 @@ TEST(CliEval, JsonPointHasTheDocumentedKeys) {
 }
 
 TEST(CliEval, JsonPolylineIsAnArray) {
-  auto r = run("eval --alpha -1 --lambda 1 --s 0.8 --points 5 --integrator rk4 --h 0.01 --format json");
+  auto r = run_lac("eval --alpha -1 --lambda 1 --s 0.8 --points 5 --integrator rk4 --h 0.01 --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.is_array());
@@ -55,7 +43,7 @@ TEST(CliEval, InvalidInputExitsWithStatusTwoAndOneLine) {
       {"eval --alpha 2 --lambda 1", "theta"},
   };
   for (auto [args, parameter] : cases) {
-    auto r = run(args);
+    auto r = run_lac(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
     EXPECT_NE(r.out.find(parameter), std::string::npos) << args << "\n" << r.out;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << "\n" << r.out;
@@ -63,7 +51,7 @@ TEST(CliEval, InvalidInputExitsWithStatusTwoAndOneLine) {
 }
 
 TEST(CliEval, HelpIsUseful) {
-  auto r = run("eval --help");
+  auto r = run_lac("eval --help");
   EXPECT_EQ(r.status, 0);
   for (const char* opt : {"--alpha", "--lambda", "--theta", "--s", "--form", "--integrator", "--h", "--tol", "--points", "--format"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;

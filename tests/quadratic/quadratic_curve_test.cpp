@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "curves/planar/la_curve.hpp"
 #include "curves/quadratic/quadratic_curve.hpp"
-#include "tests/special_erf/csv.hpp"
+#include "tests/support/reference_csv.hpp"
 
 namespace lac {
 namespace {
@@ -64,7 +64,7 @@ std::string label(double a, double g, double l, double x) {
 }
 
 TEST(QuadraticCurve, MatchesMpmathReference) {
-  const auto t = test_erf::read_csv("quadratic.csv");
+  const auto t = test::read_reference_csv("quadratic.csv");
   const size_t ca = t.column("alpha"), cg = t.column("gamma"), cl = t.column("lambda"), ck = t.column("kind"),
                cx = t.column("x"), c1 = t.column("v1"), c2 = t.column("v2");
   Worst bounds, forward_s, forward_theta, inverse_u, inverse_theta;

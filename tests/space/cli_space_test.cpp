@@ -2,6 +2,8 @@
 // Needs the `lac` executable built in the same build folder.
 #include <gtest/gtest.h>
 
+#include "tests/support/run_cli.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -11,21 +13,7 @@
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out;
-};
-
-Run run(const std::string& args) {
-  const std::string cmd = std::string(LAC_BINARY_DIR) + "/lac " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-  const int status = pclose(pipe.release());
-  return {WEXITSTATUS(status), out};
-}
+using lac::test::run_lac;
 
 // 000 Fig. 5a parameters with drawable endpoints (experiments/space_figures.cpp, θ = 1.2).
 const std::string kEnds =
@@ -33,7 +21,7 @@ const std::string kEnds =
     "--v1=-0.4838825660252134,0.8293701183329452,0.279289937364832 ";
 
 TEST(CliSpace, CompoundJsonHasTheDocumentedKeysAndPoints) {
-  const auto r = run("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --r-theta 0.5 --points 7");
+  const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --r-theta 0.5 --points 7");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"status", "length", "tangent_error", "iterations", "seconds", "segments", "points", "joint"})
@@ -50,31 +38,31 @@ TEST(CliSpace, CompoundJsonHasTheDocumentedKeysAndPoints) {
 
 TEST(CliSpace, G1WithEachSolverAndCsv) {
   for (const char* solver : {"simplex", "ceres", "newton"}) {
-    const auto r = run("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --solver " + solver);
+    const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --solver " + solver);
     ASSERT_EQ(r.status, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_TRUE(j.contains("status") && j.contains("segments")) << solver;
     EXPECT_EQ(j["solver"], solver);
   }
-  const auto c = run("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --format csv");
+  const auto c = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --format csv");
   ASSERT_EQ(c.status, 0) << c.out;
   EXPECT_EQ(c.out.rfind("status,length,tangent_error,iterations,evaluations,seconds,segments\n", 0), 0u) << c.out;
 }
 
 TEST(CliSpace, BadInputExitsWithStatus2NamingTheParameter) {
-  auto r = run("space --p0 0,0,0 --v0 1,0,0 --p1 2,0,0 --v1 0,1,0 --alpha 0 --beta 0 --omega 0.1 --type 1");
+  auto r = run_lac("space --p0 0,0,0 --v0 1,0,0 --p1 2,0,0 --v1 0,1,0 --alpha 0 --beta 0 --omega 0.1 --type 1");
   EXPECT_EQ(r.status, 2) << r.out;
   EXPECT_NE(r.out.find("v0"), std::string::npos) << r.out;
-  r = run("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 3");
+  r = run_lac("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 3");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("type"), std::string::npos) << r.out;
-  r = run("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --r-theta 1.5");
+  r = run_lac("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --r-theta 1.5");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("r_theta"), std::string::npos) << r.out;
-  r = run("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --solver bfgs");
+  r = run_lac("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --solver bfgs");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("solver"), std::string::npos) << r.out;
-  r = run("space --p0 0,0 --v0 1,0,0 --p1 1,1,0 --v1 0,1,0 --alpha 0 --beta 0 --omega 0.1 --type 1");
+  r = run_lac("space --p0 0,0 --v0 1,0,0 --p1 1,1,0 --v1 0,1,0 --alpha 0 --beta 0 --omega 0.1 --type 1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("p0"), std::string::npos) << r.out;
 }

@@ -2,6 +2,8 @@
 // and exit status 2 with one line naming the parameter. Needs the `lac` executable built.
 #include <gtest/gtest.h>
 
+#include "tests/support/run_cli.hpp"
+
 #include <array>
 #include <complex>
 #include <cmath>
@@ -14,21 +16,7 @@
 
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out;
-};
-
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(LAC_BINARY_DIR) + "/lac " + args + " 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe.get())) > 0) out.append(buf.data(), n);
-  const int status = pclose(pipe.release());
-  return {WEXITSTATUS(status), out};
-}
+using lac::test::run_lac;
 
 TEST(CliGammaInc, JsonMatchesTheReference) {
   // Γ(0, −i) = E₁(−i) and Γ(−2.5, 2i) from tests/reference/gamma_inc.csv.
@@ -40,7 +28,7 @@ TEST(CliGammaInc, JsonMatchesTheReference) {
     if (!((a == "0" && zr == 0 && zi == -1) || (a == "-2.5" && zr == 0 && zi == 2))) continue;
     char z[64];
     std::snprintf(z, sizeof z, "%.17g,%.17g", zr, zi);
-    const CliRun r = run("special gamma-inc --a " + a + " --z " + z + " --format json");
+    const lac::test::CliRun r = run_lac("special gamma-inc --a " + a + " --z " + z + " --format json");
     ASSERT_EQ(r.status, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
     const std::complex<double> value(j["re"].get<double>(), j["im"].get<double>());
@@ -55,19 +43,19 @@ TEST(CliGammaInc, JsonMatchesTheReference) {
 TEST(CliGammaInc, InvalidInputExitsWithTwo) {
   for (const char* args : {"special gamma-inc --a 0 --z 0,0", "special gamma-inc --a 11 --z 1,0",
                            "special gamma-inc --a nan --z 1,0", "special gamma-inc --a 1 --z 1"}) {
-    const CliRun r = run(args);
+    const lac::test::CliRun r = run_lac(args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.out;
     EXPECT_NE(r.out.find("error"), std::string::npos) << r.out;
   }
 }
 
 TEST(CliEvalIgf, WorksAndRejectsStep) {
-  const CliRun ok = run("eval --alpha 0.999 --lambda 1 --theta 3 --integrator igf --format json");
+  const lac::test::CliRun ok = run_lac("eval --alpha 0.999 --lambda 1 --theta 3 --integrator igf --format json");
   ASSERT_EQ(ok.status, 0) << ok.out;
   const auto j = nlohmann::json::parse(ok.out);
   EXPECT_EQ(j["status"], "ok");
   EXPECT_TRUE(std::isfinite(j["x"].get<double>()));
-  const CliRun bad = run("eval --alpha 2 --lambda 1 --theta 1 --integrator igf --h 0.1");
+  const lac::test::CliRun bad = run_lac("eval --alpha 2 --lambda 1 --theta 1 --integrator igf --h 0.1");
   EXPECT_EQ(bad.status, 2) << bad.out;
   EXPECT_NE(bad.out.find("h"), std::string::npos) << bad.out;
 }

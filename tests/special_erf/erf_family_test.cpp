@@ -12,7 +12,7 @@
 
 #include "common/error.hpp"
 #include "special/erf_family.hpp"
-#include "tests/special_erf/csv.hpp"
+#include "tests/support/reference_csv.hpp"
 
 namespace lac::special {
 namespace {
@@ -68,7 +68,7 @@ struct Worst {
 };
 
 TEST(ErfFamily, MatchesMpmathReference) {
-  const auto table = test_erf::read_csv("erf_family.csv");
+  const auto table = test::read_reference_csv("erf_family.csv");
   const size_t cf = table.column("function"), cx = table.column("x"), cv = table.column("value");
   std::map<std::string, Worst> worst;
   for (const auto& row : table.rows) {
