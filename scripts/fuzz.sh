@@ -110,10 +110,11 @@ for t in $TARGETS; do
          echo "SANITIZER_CRASH: ${line:-no longer reproduces} [$f]" >>"$sigs" ;;
     esac
   done
-  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" <<'PY'
+  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" "$RUNS" "$MAX_TIME" <<'PY'
 import re, sys
-target, execs, seconds, sigs_path, summary = sys.argv[1:]
+target, execs, seconds, sigs_path, summary, runs, max_time = sys.argv[1:]
 def strip(s):  # one signature per kind of failure, not per input
+    s = re.sub(r"==\d+==|0x[0-9a-fA-F]+|\[(crash|oom|leak|timeout)-[0-9a-f]+\]", "", s)
     return re.sub(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?\b(nan|inf)\b|\[crash-[0-9a-f]+\]|\[oom-[0-9a-f]+\]", "#", s)[:140]
 kinds = {"crash": set(), "hang": set(), "nan": set()}
 examples = {}
@@ -129,20 +130,22 @@ for line in open(sigs_path, errors="replace"):
         examples.setdefault(k, []).append(line[:160])
 notes = "; ".join(e.replace("|", "/") for k in ("crash", "hang", "nan") for e in examples.get(k, [])[:3]) or "none"
 with open(summary, "a") as f:
-    f.write("\t".join([target, execs, seconds, str(len(kinds["crash"])), str(len(kinds["hang"])), str(len(kinds["nan"])), notes]) + "\n")
+    f.write("\t".join([target, runs, max_time, execs, seconds, str(len(kinds["crash"])), str(len(kinds["hang"])), str(len(kinds["nan"])), notes]) + "\n")
 PY
   line=$(tail -1 "$summary")
-  IFS=$'\t' read -r _ _ _ nc nh nn _ <<<"$line"
+  IFS=$'\t' read -r _ _ _ _ _ nc nh nn _ <<<"$line"
   echo "fuzz_$t: $execs executions in ${seconds}s, crashes $nc, hangs $nh, NaN $nn" >&2
   ((nc + nh + nn == 0)) || status=3
 done
 
-python3 - "$summary" "$OUT" "$COMMAND" "$RUNS" "$MAX_TIME" <<'PY'
+# --report-only: LAC_FUZZ_COMMAND may name the invocations that produced the summary rows.
+COMMAND=${LAC_FUZZ_COMMAND:-$COMMAND}
+python3 - "$summary" "$OUT" "$COMMAND" <<'PY'
 import csv, os, sys
-summary, out, command, runs, max_time = sys.argv[1:]
+summary, out, command = sys.argv[1:]
 rows = [l.rstrip("\n").split("\t") for l in open(summary) if l.strip()]
 os.makedirs(out, exist_ok=True)
-cols = ["target", "executions", "seconds", "crashes", "hangs", "nan_results", "notes"]
+cols = ["target", "runs_asked", "max_seconds", "executions", "seconds", "crashes", "hangs", "nan_results", "notes"]
 with open(os.path.join(out, "robustness.csv"), "w", newline="") as f:
     f.write(f"# written by: {command}\n")
     w = csv.writer(f)
@@ -152,7 +155,7 @@ with open(os.path.join(out, "robustness.md"), "w") as f:
     f.write("# Robustness: libFuzzer targets\n\n")
     f.write(f"Written by `{command}` — do not edit by hand; rerun the command.\n\n")
     f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang, libFuzzer fork mode) for "
-            f"-runs={runs} executions or at most {max_time} s, whichever came first; `executions` is what it reached. "
+            "-runs=`runs_asked` executions or at most `max_seconds` s, whichever came first; `executions` is what it reached. "
             "crashes = distinct sanitizer reports, unexpected exception types, errors without a parameter name, "
             "CLI exit status 1; hangs = calls over the per-call CPU-time bound (LAC_FUZZ_CALL_SECONDS, default 1 s) or "
             "inputs over libFuzzer's -timeout=20; nan_results = NaN/inf in a successful result. Counts are distinct "

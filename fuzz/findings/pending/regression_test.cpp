@@ -70,6 +70,15 @@ TEST(FuzzRegression, GammaIncOverflowIsAStatus) {
   }
 }
 
+// Finding R13 (fuzz_special): gamma_inc_difference(a > 0, 0, 0) recursed forever (stack overflow).
+TEST(FuzzRegression, GammaIncDifferenceOfZeroToZeroIsZero) {
+  for (std::complex<double> zero : {std::complex<double>(0, 0), std::complex<double>(-0.0, -0.0)}) {
+    const lac::special::GammaIncResult r = lac::special::gamma_inc_difference(0.5, zero, zero);
+    EXPECT_EQ(r.status, lac::Status::ok);
+    EXPECT_EQ(std::abs(r.value), 0.0);
+  }
+}
+
 // Finding R8 (fuzz_planar_segments): an overflowing triangle gives a usable segment of infinite length.
 TEST(FuzzRegression, OverflowingTriangleIsRejectedOrFinite) {
   const lac::ControlTriangle t{{-DBL_MAX, 7.812255859375}, {3.392578125, 1e300}, {-3.437744140625, 7.999755859375}};
