@@ -4,6 +4,7 @@
 // InputError (or a CLI11 parse error): one line on stderr, exit status 2.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,16 @@ struct CommandRegistrar {
 #define LAC_CONCAT(a, b) LAC_CONCAT_INNER(a, b)
 #define LAC_REGISTER_COMMAND(setup) \
   static const ::lac::cli::CommandRegistrar LAC_CONCAT(lac_command_registrar_, __LINE__){setup}
+
+/// Storage for option targets: lives until lac::cli::run returns (then freed, so repeated
+/// calls neither leak nor grow). Use instead of `new` in a subcommand's setup function.
+std::vector<std::shared_ptr<void>>& option_storage();
+template <class T, class... Args>
+T* owned(Args&&... args) {
+  auto p = std::make_shared<T>(std::forward<Args>(args)...);
+  option_storage().push_back(p);
+  return p.get();
+}
 
 /// Gets or creates a parent subcommand (e.g. "special") so that several files can add
 /// children to it (e.g. "special gamma-inc", "special erfi-inv").

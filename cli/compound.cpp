@@ -32,8 +32,8 @@ struct CompoundArgs {
 };
 
 void setup(CLI::App& app) {
-  auto* a = new SegmentArgs;  // owned for the process lifetime, like the CLI11 app
-  auto* c = new CompoundArgs;
+  auto* a = owned<SegmentArgs>();
+  auto* c = owned<CompoundArgs>();
   auto* sub = app.add_subcommand("compound",
                                  "Compound-rhythm LA curve (two LCG slopes, G3 joint) from control points (001 section 4)");
   add_segment_options(*sub, *a);

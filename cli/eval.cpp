@@ -34,7 +34,7 @@ void run(const EvalArgs& a) {
   curve.check(p, t, p == Parameter::theta ? "theta" : "s");
   const Form form = parse_form(a.form);
   const LaIntegrator method = make_la_integrator(a.integrator, IntegratorOptions{a.h, a.tol});
-  if (a.points < 1) throw_input_error("lac eval", "points", a.points, "[1, inf)");
+  if (a.points < 1 || a.points > 1'000'000) throw_input_error("lac eval", "points", a.points, "[1, 1000000]");
   io::Stopwatch clock;
   std::vector<PositionResult> results;
   if (a.points == 1) {
@@ -68,7 +68,7 @@ void run(const EvalArgs& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* a = new EvalArgs;  // owned for the process lifetime, like the CLI11 app
+  auto* a = owned<EvalArgs>();
   auto* sub = app.add_subcommand("eval", "Point(s) on the standard-form planar LA curve (origin, tangent +x, rho = 1 at 0)");
   sub->add_option("--alpha", a->alpha, "Slope alpha of the logarithmic curvature graph (any finite real)")->required();
   sub->add_option("--lambda", a->lambda, "Lambda >= 0 (0 is the unit circle)")->required();

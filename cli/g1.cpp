@@ -152,8 +152,8 @@ void print_segment(const G1Segment& g, const SegmentArgs& a, const PreparedSegme
 namespace {
 
 void setup(CLI::App& app) {
-  auto* a = new SegmentArgs;  // owned for the process lifetime, like the CLI11 app
-  auto* alpha = new double(0);
+  auto* a = owned<SegmentArgs>();
+  auto* alpha = owned<double>(0.0);
   auto* sub = app.add_subcommand("g1", "Monotonic-rhythm LA segment from control points a0, a1, a2 and alpha (001 section 2)");
   add_segment_options(*sub, *a);
   sub->add_option("--alpha", *alpha, "Slope alpha of the logarithmic curvature graph (finite)")->required();

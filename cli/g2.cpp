@@ -91,7 +91,7 @@ void run(const G2Args& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* a = new G2Args;  // owned for the process lifetime, like the CLI11 app
+  auto* a = owned<G2Args>();
   auto* sub = app.add_subcommand("g2", "G2 Hermite interpolation by three LA segments of one alpha (004 §3)");
   sub->add_option("--p0", a->p0, "Start point \"x,y\"")->required();
   sub->add_option("--theta0", a->theta0, "Tangent angle at the start (rad)")->required();

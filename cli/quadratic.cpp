@@ -81,7 +81,7 @@ void run(const QuadraticArgs& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* a = new QuadraticArgs;  // process lifetime, like the CLI11 app
+  auto* a = owned<QuadraticArgs>();
   auto* sub = app.add_subcommand("quadratic", "Quadratic log-aesthetic curve (003): kappa=1, tangent +x at the origin at s=0");
   sub->add_option("--alpha", a->alpha, "Linear LCG coefficient alpha (finite)")->required();
   sub->add_option("--gamma", a->gamma, "Quadratic LCG coefficient gamma (finite; 0 is the LA curve)")->required();

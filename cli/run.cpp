@@ -21,8 +21,13 @@ CLI::App& parent_command(CLI::App& app, const std::string& name, const std::stri
   return *sub;
 }
 
+std::vector<std::shared_ptr<void>>& option_storage() {
+  static std::vector<std::shared_ptr<void>> storage;
+  return storage;
+}
+
 std::string* add_format_option(CLI::App& sub, std::vector<std::string> allowed) {
-  auto* target = new std::string(allowed.front());  // lives as long as the process
+  auto* target = owned<std::string>(allowed.front());
   sub.add_option("--format", *target, "Output format")->check(CLI::IsMember(allowed))->capture_default_str();
   return target;
 }
@@ -69,6 +74,9 @@ std::vector<std::vector<double>> parse_points(const std::string& text, size_t ex
 }  // namespace lac::cli
 
 int lac::cli::run(int argc, char** argv) {
+  struct FreeOptionStorage {  // declared before the app: runs after the app is destroyed
+    ~FreeOptionStorage() { lac::cli::option_storage().clear(); }
+  } free_storage;
   CLI::App app{"lac — log-aesthetic curves: evaluate curves, build segments, reproduce published tables.\n"
                "Run `lac <command> --help` for each command's options."};
   app.require_subcommand(1);

@@ -74,7 +74,7 @@ void run(const SCurveArgs& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* a = new SCurveArgs;  // owned for the process lifetime, like the CLI11 app
+  auto* a = owned<SCurveArgs>();
   auto* sub = app.add_subcommand("scurve", "S-shaped LA curve from four control points and alpha < 0 (004 §2.4-2.5)");
   sub->add_option("--points", a->points,
                   "Control points \"x0,y0 x1,y1 x2,y2 x3,y3\": start tangent P0->P1, end tangent P2->P3")

@@ -105,7 +105,7 @@ void run(const SpaceArgs& a) {
 }
 
 void setup(CLI::App& app) {
-  auto* a = new SpaceArgs;  // owned for the process lifetime, like the CLI11 app
+  auto* a = owned<SpaceArgs>();
   auto* sub = app.add_subcommand(
       "space",
       "LA space segment (000): G1 by the cone construction, or compound-rhythm when --alpha1/--beta1/--r-theta is given");

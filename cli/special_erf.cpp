@@ -39,7 +39,7 @@ void print(const InverseArgs& a, const char* function, double y, const special::
 void setup(CLI::App& app) {
   CLI::App& special = parent_command(app, "special", "Special functions");
 
-  auto* erfi_args = new InverseArgs{"", "ours"};  // process lifetime, like the CLI11 app
+  auto* erfi_args = owned<InverseArgs>(InverseArgs{"", "ours"});
   auto* erfi_cmd = special.add_subcommand("erfi-inv", "Inverse imaginary error function erfi^-1(y), any real y");
   erfi_cmd->add_option("--y", erfi_args->y_text, "Argument y (any double; +-inf gives +-inf)")->required();
   erfi_cmd->add_option("--method", erfi_args->method, "ours | hybrid-003 (003's bisection-Newton, |x| <= 26)")
@@ -51,7 +51,7 @@ void setup(CLI::App& app) {
     print(*erfi_args, "erfi_inv", y, special::erfi_inv_detailed(y, special::parse_erf_inverse_method(erfi_args->method)));
   });
 
-  auto* erf_args = new InverseArgs{"", "boost"};
+  auto* erf_args = owned<InverseArgs>(InverseArgs{"", "boost"});
   auto* erf_cmd = special.add_subcommand("erf-inv", "Inverse error function erf^-1(y), -1 < y < 1");
   erf_cmd->add_option("--y", erf_args->y_text, "Argument y in (-1, 1)")->required();
   erf_cmd->add_option("--method", erf_args->method, "boost (Boost.Math erf_inv) | hybrid-003 (003's, |x| <= 5)")

@@ -42,7 +42,7 @@ void run(const GammaIncArgs& args) {
 }
 
 void setup(CLI::App& app) {
-  auto* args = new GammaIncArgs;  // owned for the process lifetime, like the CLI11 app
+  auto* args = owned<GammaIncArgs>();
   CLI::App& special = parent_command(app, "special", "Special functions");
   auto* sub = special.add_subcommand("gamma-inc", "Upper incomplete gamma function Gamma(a, z) = int_z^inf t^(a-1) e^-t dt "
                                                   "(principal branch), real a in [-10, 10], complex z");

@@ -268,9 +268,9 @@ struct GaussKronrod {
     }
     r.value = total;
     r.error_estimate = error + 2.0 * kEps * l1;
-    if (!std::isfinite(std::abs(r.value)) || !std::isfinite(error)) {
+    if (!std::isfinite(std::abs(r.value)) || !std::isfinite(r.error_estimate)) {
       r.status = Status::numerical_failure;
-      r.message = "gauss-kronrod: non-finite integrand value";
+      r.message = "gauss-kronrod: non-finite integrand value or error estimate";
     }
     return r;
   }

@@ -9,6 +9,14 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Inside the open domain a result can still leave the double range (e.g. ρ = e^800): that is
+// an input error naming the argument, never an inf or NaN handed back.
+double representable(double value, bool positive, const LaCurve& c, const char* name, double t) {
+  if (std::isfinite(value) && (!positive || value > 0)) return value;
+  throw_input_error("LaCurve(alpha=" + format_number(c.alpha()) + ", lambda=" + format_number(c.lambda()) + ")", name, t,
+                    "where rho, kappa, s and theta are representable doubles");
+}
+
 }  // namespace
 
 LaCurve::LaCurve(double alpha, double lambda) : alpha_(alpha), lambda_(lambda) {
@@ -38,28 +46,33 @@ void LaCurve::check(Parameter p, double t, const char* name) const {
 
 double LaCurve::log_rho_at_theta(double theta) const {
   check(Parameter::theta, theta, "theta");
-  return log_rho_at_theta_unchecked(theta);
+  return representable(log_rho_at_theta_unchecked(theta), false, *this, "theta", theta);
 }
 
 double LaCurve::log_rho_at_s(double s) const {
   check(Parameter::s, s, "s");
   const double x = lambda_ * s;
-  return x * log1p_ratio(alpha_ * x);
+  return representable(x * log1p_ratio(alpha_ * x), false, *this, "s", s);
 }
 
-double LaCurve::rho_at_theta(double theta) const { return std::exp(log_rho_at_theta(theta)); }
-double LaCurve::rho_at_s(double s) const { return std::exp(log_rho_at_s(s)); }
-double LaCurve::kappa_at_theta(double theta) const { return std::exp(-log_rho_at_theta(theta)); }
-double LaCurve::kappa_at_s(double s) const { return std::exp(-log_rho_at_s(s)); }
+double LaCurve::rho_at_theta(double theta) const {
+  return representable(std::exp(log_rho_at_theta(theta)), true, *this, "theta", theta);
+}
+double LaCurve::rho_at_s(double s) const { return representable(std::exp(log_rho_at_s(s)), true, *this, "s", s); }
+double LaCurve::kappa_at_theta(double theta) const {
+  return representable(std::exp(-log_rho_at_theta(theta)), true, *this, "theta", theta);
+}
+double LaCurve::kappa_at_s(double s) const { return representable(std::exp(-log_rho_at_s(s)), true, *this, "s", s); }
 
 double LaCurve::s_at_theta(double theta) const {
   const double log_rho = log_rho_at_theta(theta);  // checks the domain
-  return theta * log1p_ratio((alpha_ - 1.0) * lambda_ * theta) * expm1_ratio(alpha_ * log_rho);
+  return representable(theta * log1p_ratio((alpha_ - 1.0) * lambda_ * theta) * expm1_ratio(alpha_ * log_rho), false,
+                       *this, "theta", theta);
 }
 
 double LaCurve::theta_at_s(double s) const {
   check(Parameter::s, s, "s");
-  return theta_at_s_unchecked(s);
+  return representable(theta_at_s_unchecked(s), false, *this, "s", s);
 }
 
 // From log ρ = Λ θ g((α−1)Λθ): θ = (log ρ / Λ) h((α−1) log ρ); likewise s with α.

@@ -4,6 +4,7 @@
 // satisfies LaClosedForm.
 //   θ-form: C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ     s-form: C(s) = ∫₀^s e^{iθ(u)} du
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <string>
 #include <string_view>
@@ -72,19 +73,47 @@ inline double integrand_rounding(const LaCurve& c, double theta_a, double theta_
   return std::numeric_limits<double>::epsilon() * (1 + log_rho + std::max(std::abs(theta_a), std::abs(theta_b))) * length;
 }
 
+/// Longest turning given to one quadrature call: a fixed 21-node rule over many turns of
+/// e^{iθ} aliases (|K − G| looks small while both are wrong), so longer pieces are split.
+inline constexpr double kMaxTurningPerPiece = 64.0;
+inline constexpr double kMaxPieces = 1e6;
+
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
+/// A non-finite error estimate makes the result a numerical_failure, never a usable value.
 template <class M>
 IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& m, Form form, double a, double b) {
+  IntegralResult<std::complex<double>> r;
   if constexpr (LaClosedForm<M>) {
-    if (form == Form::s) return m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b));
-    return m.integrate_theta(c, a, b);
+    r = form == Form::s ? m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b)) : m.integrate_theta(c, a, b);
   } else {
     static_assert(QuadratureMethod<M>, "method must be a QuadratureMethod or an LaClosedForm");
-    auto r = form == Form::s ? m.integrate(SFormIntegrand{&c}, a, b) : m.integrate(ThetaFormIntegrand{&c}, a, b);
-    r.error_estimate += form == Form::s ? integrand_rounding(c, c.theta_at_s(a), c.theta_at_s(b))
-                                        : integrand_rounding(c, a, b);
-    return r;
+    const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
+    const double pieces = std::ceil(std::abs(theta_b - theta_a) / kMaxTurningPerPiece);
+    if (!(pieces <= kMaxPieces))
+      throw_input_error("position", "theta", theta_b,
+                        "turning of at most " + format_number(kMaxTurningPerPiece * kMaxPieces) + " rad from the reference point");
+    const long n = std::max(1L, static_cast<long>(pieces));
+    double lo = a;
+    for (long k = 1; k <= n; ++k) {
+      const double theta_k = k == n ? theta_b : theta_a + (theta_b - theta_a) * static_cast<double>(k) / static_cast<double>(n);
+      const double hi = k == n ? b : (form == Form::s ? c.s_at_theta(theta_k) : theta_k);
+      auto part = form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi);
+      r.value += part.value;
+      r.error_estimate += part.error_estimate;
+      r.evaluations += part.evaluations;
+      if (part.status != Status::ok && r.status == Status::ok) {
+        r.status = part.status;
+        r.message = part.message;
+      }
+      lo = hi;
+    }
+    r.error_estimate += integrand_rounding(c, theta_a, theta_b);
   }
+  if (usable(r.status) && !(std::isfinite(r.error_estimate) && std::isfinite(std::abs(r.value)))) {
+    r.status = Status::numerical_failure;
+    r.message = "non-finite position or error estimate";
+  }
+  return r;
 }
 
 inline void merge_status(PositionResult& r, Status s, const std::string& message) {
@@ -118,7 +147,7 @@ template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic) {
   method.validate();
-  if (n < 2) throw_input_error("polyline", "points", n, "[2, inf)");
+  if (n < 2 || n > 1'000'000) throw_input_error("polyline", "points", n, "[2, 1000000]");
   std::vector<PositionResult> out(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     const double t = k + 1 == n ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);

@@ -38,6 +38,7 @@ TEST(CliEval, InvalidInputExitsWithStatusTwoAndOneLine) {
       {"eval --alpha 2 --lambda 1 --s -0.9", "s"},
       {"eval --alpha nan --lambda 1 --theta 1", "alpha"},
       {"eval --alpha 2 --lambda 1 --theta 1 --points 0", "points"},
+      {"eval --alpha 0.5 --lambda 1 --theta -0.5 --points 2147483647", "points"},  // was bad_alloc, exit 1
       {"eval --alpha 2 --lambda 1 --theta 1 --integrator euler", "integrator"},
       {"eval --alpha 2 --lambda 1 --theta 1 --integrator rk45 --h 0.1", "h"},
       {"eval --alpha 2 --lambda 1", "theta"},

@@ -242,7 +242,14 @@ TEST(LaInvalidInput, ParametersOutsideTheirRanges) {
   expect_input_error([] { LaCurve(-1.0, 2.0).theta_at_s(0.5); }, "s", "(-inf, 0.5)");
   expect_input_error([] { LaCurve(2.0, 1.0).theta_at_s(-0.5); }, "s", "(-0.5, inf)");
   expect_input_error([&] { LaCurve(2.0, 1.0).theta_at_s(nan); }, "s", "(-0.5, inf)");
-  expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 1, GaussKronrod{}); }, "points", "[2, inf)");
+  expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 1, GaussKronrod{}); }, "points", "[2, 1000000]");
+  expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 2'000'000, GaussKronrod{}); }, "points", "[2, 1000000]");
+  // Found by fuzz_la_curve: results outside the double range inside the open domain.
+  expect_input_error([] { LaCurve(1e300, 1e300).s_at_theta(1e-300); }, "theta", "representable");
+  expect_input_error([] { LaCurve(0, 7.95).theta_at_s(std::numeric_limits<double>::max()); }, "s", "representable");
+  expect_input_error([] { LaCurve(1, std::numeric_limits<double>::max()).rho_at_theta(2); }, "theta", "representable");
+  // Turning beyond what the quadrature pieces can resolve (was: status ok, |C| wrong by 1e150).
+  expect_input_error([] { position_at(LaCurve(2.0, 1.0), Parameter::s, 1e300, GaussKronrod{}); }, "theta", "turning");
   expect_input_error([] { position_at(LaCurve(0.5, 1.0), Parameter::theta, 5.0, GaussKronrod{}); }, "theta", "(-inf, 2)");
   // ρ overflows although θ is inside the domain: an error, never inf/NaN.
   expect_input_error([] { LaCurve(1.0, 1.0).frame_at(Parameter::theta, 800.0); }, "theta", "representable");
