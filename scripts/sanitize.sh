@@ -28,7 +28,7 @@ for dir in tests/*/; do
   compgen -G "$dir*.cpp" >/dev/null && targets+=("test_$name")
 done
 if ! cmake --build "$BUILD_DIR" -j "$JOBS" --target "${targets[@]}" >"$log" 2>&1; then
-  grep -E "error|Error" "$log" | head -40 >&2 || tail -40 "$log" >&2
+  grep -E "error|Error|undefined reference|FAILED" "$log" | head -40 >&2 || tail -40 "$log" >&2
   exit 1
 fi
 
