@@ -2,28 +2,11 @@
 #include <optional>
 
 #include "cli/command.hpp"
+#include "cli/segment_args.hpp"
 #include "io/timing.hpp"
 #include "segments/planar/g1_segment.hpp"
 
 namespace lac::cli {
-
-// Shared with `lac g1`; defined in cli/g1.cpp.
-struct SegmentArgs {
-  std::string points;
-  std::string solver = "toms748";
-  std::string integrator = "auto";
-  std::optional<double> h, tol;
-  int points_out = 0;
-  std::string* format = nullptr;
-};
-struct PreparedSegment {
-  ControlTriangle triangle;
-  SegmentOptions options;
-  std::optional<LaIntegrator> integrator;  ///< empty: the solvers' default (gk+tanh-sinh)
-};
-void add_segment_options(CLI::App& sub, SegmentArgs& a);
-PreparedSegment prepare_segment(const SegmentArgs& a);
-void print_segment(const G1Segment& g, const SegmentArgs& a, const PreparedSegment& s, double seconds);
 
 namespace {
 

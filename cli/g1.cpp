@@ -5,20 +5,11 @@
 #include <optional>
 
 #include "cli/command.hpp"
+#include "cli/segment_args.hpp"
 #include "io/timing.hpp"
 #include "segments/planar/g1_segment.hpp"
 
 namespace lac::cli {
-
-/// Options common to `g1` and `compound`.
-struct SegmentArgs {
-  std::string points;
-  std::string solver = "toms748";
-  std::string integrator = "auto";
-  std::optional<double> h, tol;
-  int points_out = 0;
-  std::string* format = nullptr;
-};
 
 void add_segment_options(CLI::App& sub, SegmentArgs& a) {
   sub.add_option("--points", a.points, "Control points \"x0,y0 x1,y1 x2,y2\": start, tangent intersection, end")->required();
@@ -29,12 +20,6 @@ void add_segment_options(CLI::App& sub, SegmentArgs& a) {
   sub.add_option("--points-out", a.points_out, "Number of curve points to print (0: none; svg uses 200 if 0)")->capture_default_str();
   a.format = add_format_option(sub, {"json", "csv", "svg"});
 }
-
-struct PreparedSegment {
-  ControlTriangle triangle;
-  SegmentOptions options;
-  std::optional<LaIntegrator> integrator;  ///< empty: the solvers' default (gk+tanh-sinh)
-};
 
 PreparedSegment prepare_segment(const SegmentArgs& a) {
   const auto p = parse_points(a.points, 3, "points");

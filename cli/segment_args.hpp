@@ -1,0 +1,30 @@
+#pragma once
+// Options and output shared by `lac g1` (cli/g1.cpp, which defines the functions) and
+// `lac compound` (cli/compound.cpp).
+#include <optional>
+#include <string>
+
+#include "cli/command.hpp"
+#include "segments/planar/g1_segment.hpp"
+
+namespace lac::cli {
+
+/// Options common to `g1` and `compound`.
+struct SegmentArgs {
+  std::string points;
+  std::string solver = "toms748";
+  std::string integrator = "auto";
+  std::optional<double> h, tol;
+  int points_out = 0;
+  std::string* format = nullptr;
+};
+struct PreparedSegment {
+  ControlTriangle triangle;
+  SegmentOptions options;
+  std::optional<LaIntegrator> integrator;  ///< empty: the solvers' default (gk+tanh-sinh)
+};
+void add_segment_options(CLI::App& sub, SegmentArgs& a);
+PreparedSegment prepare_segment(const SegmentArgs& a);
+void print_segment(const G1Segment& g, const SegmentArgs& a, const PreparedSegment& s, double seconds);
+
+}  // namespace lac::cli
