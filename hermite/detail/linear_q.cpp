@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <cmath>
 #include <vector>
 
 namespace lac::hermite::detail {
@@ -51,6 +52,54 @@ std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int 
   return sum;
 }
 
+// t^β at the nodes t = (panel + x_k)/panels of `panels` equal panels on [0, 1]. They depend on
+// α and the panel count only, so a solve at one α (every root-finder step of an S-curve, every
+// Newton step of a G2 problem) computes them once per thread.
+const std::vector<double>& node_powers(double beta, int panels) {
+  struct Entry {
+    double beta = NAN;
+    int panels = 0;
+    std::vector<double> values;
+  };
+  thread_local std::array<Entry, 16> cache;
+  thread_local size_t next = 0;
+  for (const Entry& e : cache)
+    if (e.beta == beta && e.panels == panels) return e.values;
+  Entry& e = cache[next++ % cache.size()];
+  const GaussLegendre01& g = rule();
+  e.beta = beta;
+  e.panels = panels;
+  e.values.resize(20 * static_cast<size_t>(panels));
+  for (int panel = 0; panel < panels; ++panel)
+    for (size_t k = 0; k < 20; ++k)
+      e.values[20 * static_cast<size_t>(panel) + k] = std::pow((panel + g.x[k]) / panels, beta);
+  return e.values;
+}
+
+// The graded rule next to a zero u* of q (α < 0, α ≠ −1), with φ in closed form: by 004 Eq. (5)
+// φ = F(q)/c0 + c2 with q = c0 (u − u*), and u − u* = (e − u*) t⁴ gives F(q) = F(q_e) t^β,
+// β = 4(α−1)/α, so φ(t) = φ* + Δ t^β with φ* = c2 = φ(u*) and Δ = F(q_e)/c0 = φ(e) − φ*.
+// The same nodes and weights as graded(..., p = 4), without a power per node when t0 = 0.
+std::complex<double> graded_from_zero(double beta, double phi_zero, double delta, double u0, double e, double t0,
+                                      int panels, long& evaluations) {
+  const GaussLegendre01& g = rule();
+  const double turning = std::abs(delta) * (1.0 - std::pow(t0, beta));
+  panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
+  const double span = (1.0 - t0) / panels;
+  const std::vector<double>* powers = t0 == 0 ? &node_powers(beta, panels) : nullptr;
+  std::complex<double> sum{};
+  for (int panel = 0; panel < panels; ++panel) {
+    const double a = t0 + panel * span;
+    for (size_t k = 0; k < 20; ++k) {
+      const double t = a + span * g.x[k];
+      const double tb = powers ? (*powers)[20 * static_cast<size_t>(panel) + k] : std::pow(t, beta);
+      sum += (g.w[k] * span * 4.0 * t * t * t) * std::polar(1.0, phi_zero + delta * tb);
+    }
+  }
+  evaluations += 20 * panels;
+  return (e - u0) * sum;
+}
+
 }  // namespace
 
 const std::array<double, 20>& gl_nodes() { return rule().x; }
@@ -62,18 +111,20 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& s
   const double ua = seg.ua, ub = seg.ub, len = ub - ua;
   const bool rough_at_zero = law.alpha < 0 && law.alpha != -1;
   if (rough_at_zero && seg.qa != seg.qb) {
-    const double u_zero = ua - seg.qa / seg.slope();
+    const double c0 = seg.slope(), u_zero = ua - seg.qa / c0;
+    // 004 Eq. (5) with F(0) = 0 (α < 0): φ* = c2 = φa − F(qa)/c0, φ(e) − φ* = F(q_e)/c0.
+    const double beta = 4.0 * (law.alpha - 1.0) / law.alpha, phi_zero = seg.phi_a - Fa / c0;
     if (u_zero > ua && u_zero < ub) {
-      return -graded(phi, u_zero, ua, 0.0, 4, panels, evaluations) +
-             graded(phi, u_zero, ub, 0.0, 4, panels, evaluations);
+      return -graded_from_zero(beta, phi_zero, Fa / c0, u_zero, ua, 0.0, panels, evaluations) +
+             graded_from_zero(beta, phi_zero, law.F(seg.qb) / c0, u_zero, ub, 0.0, panels, evaluations);
     }
     if (u_zero <= ua && ua - u_zero < 0.5 * len) {
       const double t0 = std::pow((ua - u_zero) / (ub - u_zero), 0.25);
-      return graded(phi, u_zero, ub, t0, 4, panels, evaluations);
+      return graded_from_zero(beta, phi_zero, law.F(seg.qb) / c0, u_zero, ub, t0, panels, evaluations);
     }
     if (u_zero >= ub && u_zero - ub < 0.5 * len) {
       const double t0 = std::pow((u_zero - ub) / (u_zero - ua), 0.25);
-      return -graded(phi, u_zero, ua, t0, 4, panels, evaluations);
+      return -graded_from_zero(beta, phi_zero, Fa / c0, u_zero, ua, t0, panels, evaluations);
     }
   }
   return graded(phi, ua, ub, 0.0, 1, panels, evaluations);
