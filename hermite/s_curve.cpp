@@ -51,6 +51,18 @@ void SCurveOptions::validate() const {
     throw_input_error("scurve", "bracket_doublings", bracket_doublings, "[1, 2000]");
 }
 
+namespace {
+// Tangent angle and curvature in the user frame at standard-form arc length s (no quadrature).
+void user_angle_curvature(const SCurveResult& r, double s, double& theta, double& kappa) {
+  theta = r.standard.phi_at(r.law, s);
+  kappa = r.standard.kappa_at(r.law, s);
+  if (r.mirrored) theta = -theta, kappa = -kappa;
+  if (r.reversed) theta += kPi, kappa = -kappa;
+  theta = wrap_angle(theta + std::arg(r.rotation));
+  kappa /= r.scale;
+}
+}  // namespace
+
 CurveSample SCurveResult::at(double t) const {
   if (!(t >= 0 && t <= 1)) throw_input_error("SCurveResult::at", "t", t, "[0, 1]");
   const double L = standard.ub;
@@ -58,15 +70,12 @@ CurveSample SCurveResult::at(double t) const {
   long evals = 0;
   const detail::LinearQSegment part{0.0, s, standard.qa, standard.q_at(s), 0.0};
   std::complex<double> z = s > 0 ? detail::integrate_tangent(law, part, evals) : std::complex<double>{};
-  double theta = standard.phi_at(law, s), kappa = standard.kappa_at(law, s);
-  if (mirrored) z = std::conj(z), theta = -theta, kappa = -kappa;
-  if (reversed) theta += kPi, kappa = -kappa;
+  if (mirrored) z = std::conj(z);
   CurveSample out;
   out.S = t;
   out.s = t * L * scale;
   out.position = origin + rotation * scale * z;
-  out.theta = wrap_angle(theta + std::arg(rotation));
-  out.kappa = kappa / scale;
+  user_angle_curvature(*this, s, out.theta, out.kappa);
   return out;
 }
 
@@ -200,8 +209,13 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   std::complex<double> z = o.verify ? detail::integrate_tangent_reference(res.law, res.standard) : end;
   if (res.mirrored) z = std::conj(z);
   res.residual_position = std::abs(res.origin + res.rotation * res.scale * z - B);
-  res.residual_angle = std::max(std::abs(wrap_angle(res.at(0).theta - std::arg(P[1] - P[0]))),
-                                std::abs(wrap_angle(res.at(1).theta - std::arg(P[3] - P[2]))));
+  // End angles from φ's closed form (004 Eq. 5 in linear-q form) at both ends; at(t) would also
+  // integrate the position, which is not needed here.
+  double theta0 = 0, theta1 = 0, kappa = 0;
+  user_angle_curvature(res, res.reversed ? L : 0.0, theta0, kappa);
+  user_angle_curvature(res, res.reversed ? 0.0 : L, theta1, kappa);
+  res.residual_angle = std::max(std::abs(wrap_angle(theta0 - std::arg(P[1] - P[0]))),
+                                std::abs(wrap_angle(theta1 - std::arg(P[3] - P[2]))));
   return finish(Status::ok, "");
 }
 
