@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 
 #include "common/error.hpp"
 #include "hermite/detail/g2_system.hpp"
@@ -131,10 +133,19 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   require_finite("g2", "kappa0", pr.start.kappa);
   require_finite("g2", "kappa1", pr.end.kappa);
   if (!(std::abs(pr.alpha) <= kMaxAbsAlpha)) throw_input_error("g2", "alpha", pr.alpha, "[-5, 5]");
+  // Finite end points can still be farther apart than the double range (as R10 for S-curves).
   const std::complex<double> d = pr.end.position - pr.start.position;
   const double r = std::abs(d);
-  const double scale = std::max({1.0, std::abs(pr.start.position), std::abs(pr.end.position)});
+  if (!std::isfinite(r)) throw_input_error("g2", "p1", "p1 - p0 beyond the double range (|p1 - p0| must be finite)");
+  auto max_coordinate = [](std::complex<double> z) { return std::max(std::abs(z.real()), std::abs(z.imag())); };
+  const double scale = std::max({1.0, max_coordinate(pr.start.position), max_coordinate(pr.end.position)});
   if (!(r > 1e-12 * scale)) throw_input_error("g2", "p1", "coincides with p0 (the chord must have positive length)");
+  // The solve works on curvatures per chord length (004 §3.2): they must be representable.
+  const std::string kappa_range = "[-" + format_number(std::numeric_limits<double>::max() / r) + ", " +
+                                  format_number(std::numeric_limits<double>::max() / r) +
+                                  "] (kappa times |p1 - p0| must be finite)";
+  if (!std::isfinite(pr.start.kappa * r)) throw_input_error("g2", "kappa0", pr.start.kappa, kappa_range);
+  if (!std::isfinite(pr.end.kappa * r)) throw_input_error("g2", "kappa1", pr.end.kappa, kappa_range);
 
   G2Result res;
   detail::NormalizedG2 p;
@@ -205,15 +216,35 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   res.curve.segments = detail::build_segments(p, so.h, so.q1, so.q2);
   res.length = res.curve.length();
 
-  // Residuals in the user's frame.
+  // User-unit results must be representable: the length, every point (within length/2 of the
+  // chord's midpoint: the ellipse with foci p0, p1 and major axis `length`), the curvature (|κ| is
+  // largest at a segment end: |q| is linear along each) and the coefficients.
+  double kappa_max = 0;
+  for (const auto& seg : res.curve.segments)
+    kappa_max = std::max({kappa_max, std::abs(p.law.kappa_of_q(seg.qa)), std::abs(p.law.kappa_of_q(seg.qb))});
+  kappa_max /= res.length;
+  const double reach =
+      (max_coordinate(0.5 * pr.start.position + 0.5 * pr.end.position) + 0.5 * res.length) * (1 + 1e-9);
+  bool finite = std::isfinite(res.length) && std::isfinite(reach) && std::isfinite(kappa_max);
+  for (const auto& c : res.curve.coefficients())
+    finite = finite && std::isfinite(c.c0) && std::isfinite(c.c1) && std::isfinite(c.c2);
+  if (!finite) {
+    res.length = 0;  // nothing non-finite reaches the caller, usable or not
+    res.status = Status::numerical_failure;
+    res.message = "the curve's length, curvature, extent or coefficients are beyond the double range";
+    res.seconds = seconds_since(t_begin);
+    return res;
+  }
+
+  // Residuals; the end point's in the normalized frame (end − p1 = (p1 − p0)(h ∫e^{iφ}dS − 1)),
+  // which cannot overflow.
   std::complex<double> sum{};
   if (o.verify) {
     for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent_reference(p.law, seg);
   } else {
     for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent(p.law, seg, res.evaluations);
   }
-  const std::complex<double> end = res.curve.origin + std::polar(r * so.h, res.curve.chord_angle) * sum;
-  res.residual_position = std::abs(end - pr.end.position);
+  res.residual_position = r * std::abs(so.h * sum - 1.0);
   const auto& s0 = res.curve.segments.front();
   const auto& s2 = res.curve.segments.back();
   res.residual_angle = std::max(std::abs(wrap_angle(s0.phi_a + res.curve.chord_angle - pr.start.theta)),

@@ -96,13 +96,23 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   }
   if (!(alpha < 0 && alpha >= -kMaxAbsAlpha))
     throw_input_error("scurve", "alpha", alpha, "[-5, 0) (an inflection needs alpha < 0, 004 §2.3)");
-  double scale_ref = 1;
-  for (const auto& p : P) scale_ref = std::max(scale_ref, std::abs(p));
-  const double tiny = 1e-12 * scale_ref;
-  if (!(std::abs(P[1] - P[0]) > tiny)) throw_input_error("scurve", "p1", "coincides with p0 (no start tangent)");
-  if (!(std::abs(P[3] - P[2]) > tiny)) throw_input_error("scurve", "p2", "coincides with p3 (no end tangent)");
-  if (!(std::abs(P[3] - P[0]) > tiny))
+  // The construction is similarity invariant: work on the control polygon moved to P0 = 0 and
+  // scaled by 1/ext, ext its largest extent. Finite coordinates can still have differences
+  // beyond the double range (R10 in docs/robustness.md): refused here, not an infinite curve.
+  const std::complex<double> d01 = P[1] - P[0], d03 = P[3] - P[0], d23 = P[3] - P[2];
+  const double ext = std::max({std::abs(d01), std::abs(d03), std::abs(d23)});
+  if (!std::isfinite(ext))
+    throw_input_error("scurve", "points",
+                      "differences beyond the double range (|p1 - p0|, |p3 - p0| and |p3 - p2| must be finite)");
+  // Coincidence relative to the polygon's size and, against cancellation, its coordinates.
+  double coordinate = 0;
+  for (const auto& p : P) coordinate = std::max({coordinate, std::abs(p.real()), std::abs(p.imag())});
+  const double tiny = 1e-12 * std::max(ext, coordinate);
+  if (!(std::abs(d01) > tiny)) throw_input_error("scurve", "p1", "coincides with p0 (no start tangent)");
+  if (!(std::abs(d23) > tiny)) throw_input_error("scurve", "p2", "coincides with p3 (no end tangent)");
+  if (!(std::abs(d03) > tiny))
     throw_input_error("scurve", "p3", "coincides with p0 (the chord must have positive length)");
+  const std::array<std::complex<double>, 4> Q{std::complex<double>{}, d01 / ext, d03 / ext - d23 / ext, d03 / ext};
 
   SCurveResult res;
   res.alpha = alpha;
@@ -121,7 +131,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     phi_d = std::arg(dB / dA);
   };
   double phi_e = 0, phi_d = 0;
-  frame(P[0], P[1] - P[0], P[3], P[3] - P[2], phi_e, phi_d);
+  frame(Q[0], Q[1] - Q[0], Q[3], Q[3] - Q[2], phi_e, phi_d);
   // Step 3: Fig. 2 decision. Non-S when φE lies strictly between 0 and φD.
   if (phi_e == 0 && phi_d == 0) {
     res.shape = SCurveShape::straight;
@@ -130,13 +140,13 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   }
   const bool s_shaped = !(phi_e * (phi_d - phi_e) > 0);
   res.shape = s_shaped ? SCurveShape::s_shaped : SCurveShape::c_shaped;
-  std::complex<double> A = P[0], dA = P[1] - P[0], B = P[3], dB = P[3] - P[2];
+  std::complex<double> A = Q[0], dA = Q[1] - Q[0], B = Q[3], dB = Q[3] - Q[2];
   if (!s_shaped) {
     // Curvature decreases from the standard form's start: start at the end whose tangent
     // the chord is farther from.
     if (std::abs(phi_e) < 0.5 * std::abs(phi_d)) {
       res.reversed = true;
-      A = P[3], dA = P[2] - P[3], B = P[0], dB = P[0] - P[1];
+      A = Q[3], dA = Q[2] - Q[3], B = Q[0], dB = Q[0] - Q[1];
       frame(A, dA, B, dB, phi_e, phi_d);
     }
     res.mirrored = phi_d < 0;
@@ -196,26 +206,40 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   res.lambda = lambda;
   res.standard = standard_segment(alpha, lambda, L);
   const auto end = detail::integrate_tangent(res.law, res.standard, res.evaluations);
-  // Similarity: |B − A| / |end| and the rotation of the start tangent.
-  res.scale = std::abs(B - A) / std::abs(end);
+  // Similarity onto the user's points: |B − A| / |end| in the normalized frame, times ext.
+  const double scale_normalized = std::abs(B - A) / std::abs(end);
+  res.scale = ext * scale_normalized;
   res.rotation = dA / std::abs(dA);
-  res.origin = A;
+  res.origin = res.reversed ? P[3] : P[0];
   res.length = L * res.scale;
   if (s_shaped) {
     const double s0 = -1.0 / (lambda * alpha) * res.scale;  // Eq. (12)
     res.inflection_s = res.reversed ? res.length - s0 : s0;
   }
-  // Residuals with the independent tanh-sinh evaluation.
+  // User-unit results must be representable: the length, the curvature (|κ| is largest at an
+  // end of the standard form) and every point, which lies within length/2 of the chord's
+  // midpoint (the ellipse with foci P0, P3 and major axis `length`).
+  const double kappa_max =
+      std::max(std::abs(res.law.kappa_of_q(res.standard.qa)), std::abs(res.law.kappa_of_q(res.standard.qb))) /
+      res.scale;
+  const std::complex<double> mid = 0.5 * P[0] + 0.5 * P[3];
+  const double reach = (std::max(std::abs(mid.real()), std::abs(mid.imag())) + 0.5 * res.length) * (1 + 1e-9);
+  if (!(std::isfinite(res.length) && res.scale > 0 && std::isfinite(kappa_max) && std::isfinite(reach))) {
+    res.length = 0, res.inflection_s = -1;  // nothing non-finite reaches the caller, usable or not
+    return finish(Status::numerical_failure,
+                  "the curve's length, curvature or extent in user units is beyond the double range");
+  }
+  // Residuals with the independent tanh-sinh evaluation, in the normalized frame (no overflow).
   std::complex<double> z = o.verify ? detail::integrate_tangent_reference(res.law, res.standard) : end;
   if (res.mirrored) z = std::conj(z);
-  res.residual_position = std::abs(res.origin + res.rotation * res.scale * z - B);
+  res.residual_position = ext * std::abs(A + res.rotation * scale_normalized * z - B);
   // End angles from φ's closed form (004 Eq. 5 in linear-q form) at both ends; at(t) would also
   // integrate the position, which is not needed here.
   double theta0 = 0, theta1 = 0, kappa = 0;
   user_angle_curvature(res, res.reversed ? L : 0.0, theta0, kappa);
   user_angle_curvature(res, res.reversed ? 0.0 : L, theta1, kappa);
-  res.residual_angle = std::max(std::abs(wrap_angle(theta0 - std::arg(P[1] - P[0]))),
-                                std::abs(wrap_angle(theta1 - std::arg(P[3] - P[2]))));
+  res.residual_angle =
+      std::max(std::abs(wrap_angle(theta0 - std::arg(d01))), std::abs(wrap_angle(theta1 - std::arg(d23))));
   return finish(Status::ok, "");
 }
 

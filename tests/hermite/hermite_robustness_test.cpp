@@ -1,0 +1,139 @@
+// Overflow class of R10 (docs/robustness.md, found by fuzz_hermite): finite inputs whose
+// differences, lengths or curvatures leave the double range must give an InputError naming the
+// parameter or a non-usable status, never a usable result with inf/NaN in user units.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include "common/error.hpp"
+#include "hermite/g2_hermite.hpp"
+#include "hermite/s_curve.hpp"
+
+namespace lac::hermite {
+namespace {
+
+using Points = std::array<std::complex<double>, 4>;
+constexpr double kMax = DBL_MAX;
+
+bool finite(std::complex<double> z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
+
+void expect_finite_samples(const std::vector<CurveSample>& pts) {
+  for (const auto& q : pts) {
+    EXPECT_TRUE(finite(q.position)) << "S " << q.S;
+    EXPECT_TRUE(std::isfinite(q.s)) << "S " << q.S;
+    EXPECT_TRUE(std::isfinite(q.theta)) << "S " << q.S;
+    EXPECT_TRUE(std::isfinite(q.kappa)) << "S " << q.S;
+  }
+}
+
+// Every user-unit number of the result is finite; the samples too when the status is usable.
+void expect_finite(const SCurveResult& r) {
+  EXPECT_TRUE(std::isfinite(r.length));
+  EXPECT_TRUE(std::isfinite(r.lambda));
+  EXPECT_TRUE(std::isfinite(r.inflection_s));
+  EXPECT_TRUE(std::isfinite(r.residual_position));
+  EXPECT_TRUE(std::isfinite(r.residual_angle));
+  if (usable(r.status)) expect_finite_samples(r.polyline(33));
+}
+
+void expect_finite(const G2Result& r) {
+  EXPECT_TRUE(std::isfinite(r.length));
+  EXPECT_TRUE(std::isfinite(r.residual_position));
+  EXPECT_TRUE(std::isfinite(r.residual_angle));
+  EXPECT_TRUE(std::isfinite(r.residual_curvature));
+  if (!usable(r.status)) return;
+  expect_finite_samples(r.curve.polyline(33));
+  for (const auto& c : r.curve.coefficients()) {
+    EXPECT_TRUE(std::isfinite(c.c0) && std::isfinite(c.c1) && std::isfinite(c.c2));
+  }
+}
+
+template <class F>
+void expect_input_error(F&& f, const std::string& parameter, const std::string& text) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError for " << parameter;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.parameter(), parameter) << e.what();
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+TEST(HermiteRobustness, R10SCurveWithOverflowingLengthIsNotUsable) {
+  // The fuzzer's input: finite coordinates, a curve longer than DBL_MAX (was: ok, length = inf).
+  const Points P{{{2, 2}, {10, kMax}, {10, 2.2e-308}, {kMax, 2}}};
+  for (RootMethod m : {RootMethod::toms748, RootMethod::bisection}) {
+    SCurveOptions o;
+    o.root = m;
+    const SCurveResult r = solve_s_curve(P, -2.561767578125, o);
+    EXPECT_FALSE(usable(r.status)) << to_string(r.status);
+    EXPECT_NE(r.message.find("double range"), std::string::npos) << r.message;
+    expect_finite(r);
+  }
+}
+
+TEST(HermiteRobustness, SCurveWithOverflowingDifferencesThrowsNamingPoints) {
+  expect_input_error([] { solve_s_curve(Points{{{-kMax, 0}, {0, 1}, {1, 1}, {kMax, 0}}}, -1.0); }, "points",
+                     "double range");
+  expect_input_error([] { solve_s_curve(Points{{{0, 0}, {kMax, -kMax}, {1, 1}, {2, 0}}}, -2.0); }, "points",
+                     "double range");
+}
+
+TEST(HermiteRobustness, SCurveIsSimilarityInvariantAtExtremeScales) {
+  // The same polygon at scale 1, 1e-300 and 1e300 (and shifted): same Λ, length scaled.
+  const Points base{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}};
+  const SCurveResult ref = solve_s_curve(base, -1.5);
+  ASSERT_EQ(ref.status, Status::ok) << ref.message;
+  for (double scale : {1e-300, 1e300, 0.2 * kMax}) {
+    for (std::complex<double> shift : {std::complex<double>(0, 0), std::complex<double>(1.5, -2) * scale}) {
+      Points P;
+      for (size_t k = 0; k < 4; ++k) P[k] = base[k] * scale + shift;
+      const SCurveResult r = solve_s_curve(P, -1.5);
+      ASSERT_EQ(r.status, Status::ok) << "scale " << scale << ": " << r.message;
+      EXPECT_NEAR(r.lambda, ref.lambda, 1e-12 * ref.lambda);
+      EXPECT_NEAR(r.length / scale, ref.length, 1e-12 * ref.length);
+      EXPECT_LE(r.residual_position / (3 * scale), 1e-10);
+      expect_finite(r);
+    }
+  }
+}
+
+TEST(HermiteRobustness, G2WithOverflowingChordThrowsNamingP1) {
+  const G2Problem p{{{-kMax, 0}, 0.3, 1}, {{kMax, 0}, -0.3, 1}, -0.5};
+  expect_input_error([&] { solve_g2(p); }, "p1", "double range");
+}
+
+TEST(HermiteRobustness, G2WithCurvatureTimesChordOverflowingThrowsNamingKappa) {
+  expect_input_error([] { solve_g2({{{0, 0}, 0.3, 1e300}, {{1e10, 0}, -0.3, -1}, -0.5}); }, "kappa0", "must be finite");
+  expect_input_error([] { solve_g2({{{0, 0}, 0.3, 1}, {{0, -1e10}, -0.3, -1e300}, -0.5}); }, "kappa1", "must be finite");
+  // κ·|p1 − p0| = 1e300 is representable: no curve is found, and nothing non-finite escapes.
+  for (G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+    G2Options o;
+    o.solver = solver;
+    o.grid_fallback = false;
+    const G2Result r = solve_g2({{{0, 0}, 0.3, 1e300}, {{1, 0}, -0.3, 1e300}, -0.5}, o);
+    SCOPED_TRACE(std::string(to_string(solver)));
+    expect_finite(r);
+  }
+}
+
+TEST(HermiteRobustness, G2ReachingBeyondTheDoubleRangeIsNotUsable) {
+  // Was: tolerance_not_met (usable) with length = inf and inf / NaN points.
+  for (const G2Problem& p : {G2Problem{{{-kMax, 0}, 0.6, 0.5 / kMax}, {{0, 0}, -0.6, -0.3 / kMax}, -0.5},
+                             G2Problem{{{0, 0}, 1.5, 0}, {{0.9 * kMax, 0}, -1.5, 0}, -0.5}}) {
+    const G2Result r = solve_g2(p);
+    EXPECT_EQ(r.status, Status::numerical_failure) << r.message;
+    EXPECT_NE(r.message.find("double range"), std::string::npos) << r.message;
+    expect_finite(r);
+  }
+  // The same shape at a representable scale solves, with finite results.
+  const G2Result ok = solve_g2({{{0, 0}, 0.6, 0.5e-300}, {{1e300, 0}, -0.6, -0.3e-300}, -0.5});
+  EXPECT_EQ(ok.status, Status::ok) << ok.message;
+  EXPECT_LE(ok.residual_position / 1e300, 1e-10);
+  expect_finite(ok);
+}
+
+}  // namespace
+}  // namespace lac::hermite
