@@ -171,7 +171,7 @@ void kappa_table(const std::string& ref_dir, const std::string& out, const Setti
       int failures = 0;
       std::vector<int> its;
       for (size_t i = 0; i < cases->size(); ++i) {
-        const auto k = curves[i].solve_kappa((*cases)[i].s);
+        const auto k = curves[i].solve_log_kappa((*cases)[i].s);
         its.push_back(k.iterations);
         const double e = std::abs(k.log_kappa - (*cases)[i].u);
         if (k.status != lac::Status::ok || !std::isfinite(k.log_kappa) || e > 1e-6) {
@@ -189,7 +189,7 @@ void kappa_table(const std::string& ref_dir, const std::string& out, const Setti
       double sink = 0;
       const auto timing = lac::io::time_calls(
           [&] {
-            sink += curves[k].solve_kappa((*cases)[k].s).log_kappa;
+            sink += curves[k].solve_log_kappa((*cases)[k].s).log_kappa;
             k = k + 1 == cases->size() ? 0 : k + 1;
           },
           st.samples, st.sample_seconds);

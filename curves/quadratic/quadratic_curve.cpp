@@ -9,6 +9,7 @@ namespace lac {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr const char* kFunction = "quadratic LA curve";
+constexpr const char* kNotRepresentable = "(where kappa and theta are representable doubles)";
 }  // namespace
 
 void QuadraticOptions::validate() const {
@@ -28,6 +29,24 @@ QuadraticLaCurve::QuadraticLaCurve(double alpha, double gamma, double lambda, Qu
   s_lo_ = -s_integral_.limit_plus() / lambda_;   // κ → ∞
   s_hi_ = -s_integral_.limit_minus() / lambda_;  // κ → 0
   theta_hi_ = -theta_integral_.limit_minus() / lambda_;
+  // Extreme α, γ, Λ can round both bounds to the same value or to NaN (R9 (a)); such a curve
+  // has no s to evaluate at. The extended end 2 s_i − s(κ→∞) may overflow to +inf (open end).
+  const Interval d = s_domain();
+  if (!(d.lo < d.hi) || std::isnan(theta_hi_))
+    throw_input_error(kFunction, gamma != 0 ? "gamma" : "lambda",
+                      "s domain not representable: (" + format_number(d.lo) + ", " + format_number(d.hi) +
+                          ") for alpha " + format_number(alpha) + ", gamma " + format_number(gamma) + ", lambda " +
+                          format_number(lambda));
+}
+
+double QuadraticLaCurve::s_at_log_kappa(double u) const {
+  require_finite(kFunction, "log_kappa", u);
+  return -s_integral_(u) / lambda_;
+}
+
+double QuadraticLaCurve::theta_at_log_kappa(double u) const {
+  require_finite(kFunction, "log_kappa", u);
+  return -theta_integral_(u) / lambda_;
 }
 
 bool QuadraticLaCurve::has_inflection() const { return std::isfinite(s_hi_); }
@@ -64,14 +83,36 @@ double QuadraticLaCurve::lcg(double log_rho) const {
 KappaSolution QuadraticLaCurve::solve_kappa(double s) const {
   check_s(s, "s");
   if (s == s_hi_) return {-kInf, 0.0, 0, Status::ok};  // the inflection point itself
-  const bool mirrored = s > s_hi_;
-  const double base_s = mirrored ? 2.0 * s_hi_ - s : s;
+  const double base_s = mirrored_s(s);
   const auto sol = s_integral_.inverse(-lambda_ * base_s, options_.inverse, options_.max_iterations);
-  KappaSolution out;
-  out.log_kappa = sol.u;
-  out.kappa = mirrored ? -std::exp(sol.u) : std::exp(sol.u);
-  out.iterations = sol.iterations;
-  out.status = sol.status;
+  return finish(s, sol);
+}
+
+LogKappaSolution QuadraticLaCurve::solve_log_kappa(double s) const {
+  check_s(s, "s");
+  if (s == s_hi_) return {-kInf, 1, 0, Status::ok};
+  const auto sol = s_integral_.inverse(-lambda_ * mirrored_s(s), options_.inverse, options_.max_iterations);
+  if (std::isnan(sol.u) || (std::isinf(sol.u) && sol.status == Status::ok))
+    throw_input_error(kFunction, "s", s, "(where log kappa is a representable double)");
+  return {sol.u, s > s_hi_ ? -1 : 1, sol.iterations, sol.status};
+}
+
+double QuadraticLaCurve::mirrored_s(double s) const {
+  if (!(s > s_hi_)) return s;
+  // Past the inflection: s_i − (s − s_i), written so that 2 s_i cannot overflow.
+  const double base = s_hi_ - (s - s_hi_);
+  if (!(base > s_lo_)) throw_input_error(kFunction, "s", s, kNotRepresentable);
+  return base;
+}
+
+KappaSolution QuadraticLaCurve::finish(double s, const detail::InverseSolution& sol) const {
+  KappaSolution out{sol.u, s > s_hi_ ? -std::exp(sol.u) : std::exp(sol.u), sol.iterations, sol.status};
+  // Inside the domain κ can still exceed the double range (R9 (b)): an input error, never an inf.
+  if (!std::isfinite(out.kappa) || std::isnan(out.log_kappa)) {
+    if (sol.status == Status::ok) throw_input_error(kFunction, "s", s, kNotRepresentable);
+    out.log_kappa = 0.0;  // a failed hybrid_003 solve: the status says so; no inf handed back
+    out.kappa = s > s_hi_ ? -1.0 : 1.0;
+  }
   return out;
 }
 
@@ -79,17 +120,26 @@ KappaSolution QuadraticLaCurve::solve_kappa_near(double s, double log_kappa_gues
   check_s(s, "s");
   if (s == s_hi_) return {-kInf, 0.0, 0, Status::ok};
   if (options_.inverse != special::ErfInverseMethod::ours || !std::isfinite(log_kappa_guess)) return solve_kappa(s);
-  const bool mirrored = s > s_hi_;
-  const double base_s = mirrored ? 2.0 * s_hi_ - s : s;
-  const auto sol = s_integral_.polish(-lambda_ * base_s, log_kappa_guess, options_.max_iterations);
-  return {sol.u, mirrored ? -std::exp(sol.u) : std::exp(sol.u), sol.iterations, sol.status};
+  const double base_s = mirrored_s(s);
+  return finish(s, s_integral_.polish(-lambda_ * base_s, log_kappa_guess, options_.max_iterations));
 }
 
-double QuadraticLaCurve::theta_at_s(double s) const {
-  const KappaSolution k = solve_kappa(s);
-  if (k.kappa == 0) return theta_hi_;
-  return theta_at_log_kappa(k.log_kappa);  // past the inflection θ(s_i + t) = θ(s_i − t)
+double QuadraticLaCurve::theta_of(double s, const KappaSolution& k, bool throw_on_failure) const {
+  if (k.log_kappa == -kInf) return theta_hi_;  // the inflection point (not an underflowed κ)
+  const double theta = -theta_integral_(k.log_kappa) / lambda_;  // past the inflection θ(s_i + t) = θ(s_i − t)
+  if (k.status == Status::ok) {
+    if (!std::isfinite(theta)) throw_input_error(kFunction, "s", s, kNotRepresentable);  // R9 (c)
+    return theta;
+  }
+  // A failed hybrid_003 solve: a plain θ(s) has no status to carry it, a frame has.
+  if (throw_on_failure)
+    throw_input_error(kFunction, "s", s,
+                      "(where 003's hybrid inverse finds kappa; here its status is " +
+                          std::string(to_string(k.status)) + "; QuadraticOptions::inverse = ours covers the domain)");
+  return std::isfinite(theta) ? theta : 0.0;
 }
+
+double QuadraticLaCurve::theta_at_s(double s) const { return theta_of(s, solve_kappa(s), true); }
 
 CurvePoint QuadraticLaCurve::frame_at(double s, KappaSolution* solution) const {
   const KappaSolution k = solve_kappa(s);
@@ -97,10 +147,12 @@ CurvePoint QuadraticLaCurve::frame_at(double s, KappaSolution* solution) const {
   CurvePoint p;
   p.s = s;
   p.kappa = k.kappa;
-  p.rho = k.kappa == 0 ? kInf : 1.0 / k.kappa;
+  p.rho = k.log_kappa == -kInf ? kInf : 1.0 / k.kappa;  // ±inf only at the inflection itself
+  if (!std::isfinite(p.rho) && k.log_kappa != -kInf && k.status == Status::ok)
+    throw_input_error(kFunction, "s", s, kNotRepresentable);
   // Point symmetry about the inflection: C(s_i + t) − C(s_i) = −(C(s_i − t) − C(s_i)), so the
   // tangent is even, θ(s_i + t) = θ(s_i − t), and κ = θ' is odd.
-  p.theta = k.kappa == 0 ? theta_hi_ : theta_at_log_kappa(k.log_kappa);
+  p.theta = theta_of(s, k, false);  // a failed solve is flagged by k.status
   return p;
 }
 

@@ -44,6 +44,14 @@ struct KappaSolution {
   Status status = Status::ok;
 };
 
+/// log|κ|(s) where κ itself may exceed the double range (see solve_log_kappa).
+struct LogKappaSolution {
+  double log_kappa = 0;  ///< u = log|κ| (−inf only at the inflection point itself)
+  int sign = 1;          ///< sign of κ (−1 past the inflection)
+  int iterations = 0;
+  Status status = Status::ok;
+};
+
 class QuadraticLaCurve {
  public:
   /// α, γ finite, Λ > 0 finite; InputError otherwise (Λ = 0 would be a circle, which has no
@@ -64,9 +72,10 @@ class QuadraticLaCurve {
   /// θ at κ → 0 (finite when has_inflection()).
   double theta_at_zero_kappa() const { return theta_hi_; }
 
-  /// Closed forms in u = log κ (any finite u; ±inf only past the double range).
-  double s_at_log_kappa(double u) const { return -s_integral_(u) / lambda_; }
-  double theta_at_log_kappa(double u) const { return -theta_integral_(u) / lambda_; }
+  /// Closed forms in u = log κ (any finite u, InputError "log_kappa" otherwise; ±inf only past
+  /// the double range).
+  double s_at_log_kappa(double u) const;
+  double theta_at_log_kappa(double u) const;
   /// s(κ), κ > 0.
   double s_at_kappa(double kappa) const;
   /// ds/dκ = −κ^(−α + γ log κ − 1)/Λ (MATH.md §4), κ > 0.
@@ -74,13 +83,20 @@ class QuadraticLaCurve {
   /// The LCG parabola: log(ρ ds/dρ) = γ(log ρ)² + α log ρ − log Λ.
   double lcg(double log_rho) const;
 
-  /// κ(s) for s in s_domain() (InputError otherwise), with iterations and status.
+  /// κ(s) for s in s_domain() (InputError otherwise, also where κ exceeds the double range),
+  /// with iterations and status (a failed hybrid_003 solve returns κ = ±1 with its status).
   KappaSolution solve_kappa(double s) const;
+  /// As solve_kappa, but also where κ = e^u exceeds the double range (e.g. the plateau of s(u)
+  /// for small γ > 0): only u = log|κ| is returned.
+  LogKappaSolution solve_log_kappa(double s) const;
   double kappa_at_s(double s) const { return solve_kappa(s).kappa; }
   /// κ(s) by Halley from a nearby log κ (e.g. the previous point of a polyline): no erfi⁻¹ start.
   KappaSolution solve_kappa_near(double s, double log_kappa_guess) const;
   /// d(log|κ|)/ds = −Λ e^(−E(u)) at u = log|κ| (sign flips past the inflection).
   double dlog_kappa_ds(double log_kappa) const { return -lambda_ * std::exp(-s_integral_.exponent(log_kappa)); }
+
+  /// θ(s); InputError "s" where θ is not a finite double, or where 003's hybrid inverse (option)
+  /// fails (a plain double has no status to carry that).
   double theta_at_s(double s) const;
 
   /// s, θ, κ (signed), ρ = 1/κ (±inf at the inflection); position left 0 (see quadratic_position.hpp).
@@ -92,6 +108,10 @@ class QuadraticLaCurve {
   void check_s(double s, const char* name) const;
 
  private:
+  double mirrored_s(double s) const;  // s past the inflection → its mirror image below s(κ→0)
+  KappaSolution finish(double s, const detail::InverseSolution& sol) const;
+  double theta_of(double s, const KappaSolution& k, bool throw_on_failure) const;
+
   double alpha_, gamma_, lambda_;
   QuadraticOptions options_;
   detail::ExpQuadraticIntegral s_integral_, theta_integral_;

@@ -97,7 +97,7 @@ TEST(QuadraticCurve, MatchesMpmathReference) {
       EXPECT_LE(et, kForwardTol + cond) << where;
     } else {
       ++n_inverse;
-      const auto k = c.solve_kappa(x);
+      const auto k = c.solve_log_kappa(x);
       ASSERT_EQ(k.status, Status::ok) << where;
       // Condition number of u(s): |s du/ds| = |s| Λ e^(−E(u)), times the relative size of s's terms.
       const double e_u = (g * v1 - a) * v1;
@@ -138,7 +138,7 @@ TEST(QuadraticCurve, KappaOfSOfKappaRoundTrip) {
     for (double u = -40; u <= 40; u += 0.37) {
       const double s = c.s_at_log_kappa(u);
       if (!c.s_domain().contains(s)) continue;  // s rounded onto a bound
-      const auto k = c.solve_kappa(s);
+      const auto k = c.solve_log_kappa(s);
       ASSERT_EQ(k.status, Status::ok);
       max_iterations = std::max(max_iterations, k.iterations);
       const double e_u = (p[1] * u - p[0]) * u;

@@ -1,0 +1,82 @@
+// Regression tests for robustness finding R9 (docs/robustness.md, found by fuzz_quadratic):
+// empty or NaN s domains, κ and θ beyond the double range inside the domain, NaN log κ.
+// The inputs are the ones listed there; each must give an InputError naming the parameter.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "common/error.hpp"
+#include "curves/quadratic/quadratic_position.hpp"
+
+namespace lac {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+QuadraticOptions hybrid_through() {
+  QuadraticOptions o;
+  o.inverse = special::ErfInverseMethod::hybrid_003;
+  o.through_inflection = true;
+  return o;
+}
+
+/// `call` must throw an InputError naming `parameter` (and nothing else).
+template <class Call>
+void expect_input_error(Call call, const std::string& parameter, const std::string& what) {
+  try {
+    call();
+    ADD_FAILURE() << what << " returned instead of throwing an InputError naming " << parameter;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.parameter(), parameter) << what << ": " << e.what();
+  }
+}
+
+// (a) α, γ, Λ whose s domain rounds to an empty interval or NaN.
+TEST(QuadraticRobustness, R9aConstructorRejectsUnrepresentableDomain) {
+  expect_input_error([] { QuadraticLaCurve(2.2e-16, -1e300, 1e300); }, "gamma", "QuadraticLaCurve(2.2e-16, -1e300, 1e300)");
+  expect_input_error([] { QuadraticLaCurve(1, -DBL_MAX, DBL_MAX, hybrid_through()); }, "gamma",
+                     "QuadraticLaCurve(1, -DBL_MAX, DBL_MAX, {hybrid_003, through_inflection})");
+  // A nearby ordinary curve is still accepted (the check is not a blanket rejection).
+  const QuadraticLaCurve ok(1, -1, 1, hybrid_through());
+  EXPECT_LT(ok.s_domain().lo, ok.s_domain().hi);
+}
+
+// (b) s inside the domain where κ exceeds the double range: InputError, never κ = inf.
+TEST(QuadraticRobustness, R9bKappaBeyondDoubleRangeIsAnInputError) {
+  const QuadraticLaCurve c1(1, 1e-300, 1), c2(1, 2.2e-16, 1e300);
+  ASSERT_TRUE(c1.s_domain().contains(-7.625));
+  ASSERT_TRUE(c2.s_domain().contains(-1e-8));
+  expect_input_error([&] { c1.solve_kappa(-7.625); }, "s", "QuadraticLaCurve(1, 1e-300, 1).solve_kappa(-7.625)");
+  expect_input_error([&] { c2.solve_kappa(-1e-8); }, "s", "QuadraticLaCurve(1, 2.2e-16, 1e300).solve_kappa(-1e-8)");
+  expect_input_error([&] { c1.frame_at(-7.625); }, "s", "frame_at(-7.625)");
+  expect_input_error([&] { position_at(c2, -1e-8, GaussKronrod{}); }, "s", "position_at(-1e-8)");
+  // Closer to s = 0 the same curves give finite κ (the rejection is only where κ overflows).
+  const KappaSolution k = c1.solve_kappa(-0.5);
+  EXPECT_TRUE(std::isfinite(k.kappa));
+  EXPECT_EQ(k.status, Status::ok);
+}
+
+// (c) θ beyond the double range (or 003's hybrid failing) at s inside the domain.
+TEST(QuadraticRobustness, R9cThetaBeyondDoubleRangeIsAnInputError) {
+  const QuadraticLaCurve c1(-1, 1e-300, 1, hybrid_through()), c2(DBL_MAX, DBL_MAX, 1);
+  ASSERT_TRUE(c1.s_domain().contains(-7.375));
+  ASSERT_TRUE(c2.s_domain().contains(1.0));
+  expect_input_error([&] { c1.theta_at_s(-7.375); }, "s", "QuadraticLaCurve(-1, 1e-300, 1, {hybrid, through}).theta_at_s(-7.375)");
+  expect_input_error([&] { c2.theta_at_s(1); }, "s", "QuadraticLaCurve(DBL_MAX, DBL_MAX, 1).theta_at_s(1)");
+  expect_input_error([&] { c2.frame_at(1); }, "s", "QuadraticLaCurve(DBL_MAX, DBL_MAX, 1).frame_at(1)");
+}
+
+// (d) NaN (or infinite) log κ is an input error, not a NaN result.
+TEST(QuadraticRobustness, R9dNanLogKappaIsAnInputError) {
+  const QuadraticLaCurve c(-1, -0.5, 1);
+  expect_input_error([&] { c.s_at_log_kappa(kNan); }, "log_kappa", "s_at_log_kappa(NaN)");
+  expect_input_error([&] { c.theta_at_log_kappa(kNan); }, "log_kappa", "theta_at_log_kappa(NaN)");
+  expect_input_error([&] { c.s_at_log_kappa(std::numeric_limits<double>::infinity()); }, "log_kappa",
+                     "s_at_log_kappa(inf)");
+}
+
+}  // namespace
+}  // namespace lac
