@@ -5,7 +5,9 @@
 //   Segment/...              RK4 with h = 0.001 over θ ∈ [0, 1] on the α = 2, Λ = 1 row:
 //                            quadrature endpoint (2 new evaluations per step), the literal RK4 ODE
 //                            with an observer collecting the 1001 step points (4 evaluations per
-//                            step, as 002's Butcher tableau), and the library polyline of 1001 points.
+//                            step, as 002's Butcher tableau), the library polyline of 1001 points
+//                            (one RK4 sweep, 2 new evaluations per step), and the 1001 frames alone
+//                            (LaCurve::frame_at: the polyline's cost that is not quadrature).
 // Targets (issue 4): best endpoint ≤ 1e-13 relative in ≤ 2 µs median on every row; RK4 h = 0.001
 // over a segment ≤ 150 µs median. Run with --benchmark_repetitions=5 for medians; the machine is
 // shared, so compare methods within one run.
@@ -96,6 +98,18 @@ void segment_polyline(benchmark::State& state, lac::p002::ReferenceEnd ref) {
   state.counters["evaluations"] = static_cast<double>(line.back().evaluations);
 }
 
+/// The 1001 frames (s, θ, ρ, κ) alone, as polyline computes them before integrating: the part
+/// of the polyline time that is not quadrature.
+void segment_frames(benchmark::State& state, lac::p002::ReferenceEnd ref) {
+  const lac::LaCurve curve(ref.alpha, ref.lambda);
+  std::vector<lac::CurvePoint> frames(1001);
+  for (auto _ : state) {
+    for (int k = 0; k < 1001; ++k)
+      frames[static_cast<size_t>(k)] = curve.frame_at(lac::Parameter::theta, k == 1000 ? ref.theta_end : ref.theta_end * k / 1000.0);
+    benchmark::DoNotOptimize(frames.data());
+  }
+}
+
 /// Registers every benchmark before benchmark_main runs.
 const bool registered = [] {
   const auto rows = lac::p002::reference_set(lac::p002::read_reference(), "appendix_a");
@@ -112,6 +126,8 @@ const bool registered = [] {
   benchmark::RegisterBenchmark("Segment/rk4_h=1e-3/ode_observer_1001_points/alpha=2/Lambda=1", segment_ode_observer, row)
       ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("Segment/rk4_h=1e-3/library_polyline_1001_points/alpha=2/Lambda=1", segment_polyline, row)
+      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("Segment/frames_only_1001_points/alpha=2/Lambda=1", segment_frames, row)
       ->Unit(benchmark::kMicrosecond);
   return true;
 }();

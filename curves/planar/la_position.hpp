@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <concepts>
+#include <limits>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -78,6 +81,35 @@ inline double integrand_rounding(const LaCurve& c, double theta_a, double theta_
 inline constexpr double kMaxTurningPerPiece = 64.0;
 inline constexpr double kMaxPieces = 1e6;
 
+/// Calls visit(lo, hi) for the consecutive quadrature intervals that make up [a, b] in the
+/// variable of `form`: at most kMaxTurningPerPiece of turning each. InputError beyond kMaxPieces.
+template <class Visit>
+void for_each_subpiece(const LaCurve& c, Form form, double a, double b, Visit&& visit) {
+  const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
+  const double pieces = std::ceil(std::abs(theta_b - theta_a) / kMaxTurningPerPiece);
+  if (!(pieces <= kMaxPieces))
+    throw_input_error("position", "theta", theta_b,
+                      "turning of at most " + format_number(kMaxTurningPerPiece * kMaxPieces) + " rad from the reference point");
+  const long n = std::max(1L, static_cast<long>(pieces));
+  double lo = a;
+  for (long k = 1; k <= n; ++k) {
+    const double theta_k = k == n ? theta_b : theta_a + (theta_b - theta_a) * static_cast<double>(k) / static_cast<double>(n);
+    const double hi = k == n ? b : (form == Form::s ? c.s_at_theta(theta_k) : theta_k);
+    if (!visit(lo, hi)) return;
+    lo = hi;
+  }
+}
+
+/// Evaluation budget of one position call made of several quadrature calls (a call that turns
+/// more than kMaxTurningPerPiece): the method's own per-call budget, so that up to 10^6 pieces
+/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces.
+template <class M>
+long evaluation_budget(const M&) {
+  return std::numeric_limits<long>::max();
+}
+inline long evaluation_budget(const Rk45& m) { return 6 * m.max_steps + 1; }
+inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_intervals + 1); }
+
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
 /// A non-finite error estimate makes the result a numerical_failure, never a usable value.
 template <class M>
@@ -85,18 +117,32 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
   IntegralResult<std::complex<double>> r;
   if constexpr (LaClosedForm<M>) {
     r = form == Form::s ? m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b)) : m.integrate_theta(c, a, b);
+  } else if constexpr (std::same_as<M, Rk4>) {
+    Rk4Sweep<std::complex<double>> sweep(m);
+    sweep.reserve(b - a);
+    const ThetaFormIntegrand ft{&c};
+    const SFormIntegrand fs{&c};
+    if (sweep.status() == Status::ok) for_each_subpiece(c, form, a, b, [&](double lo, double hi) {
+      r.value += form == Form::s ? sweep.advance(fs, lo, hi) : sweep.advance(ft, lo, hi);
+      return sweep.status() == Status::ok;
+    });
+    r.evaluations = sweep.evaluations();
+    r.status = sweep.status();
+    r.message = sweep.message();
+    r.error_estimate = r.status == Status::ok ? sweep.error_estimate() : std::numeric_limits<double>::infinity();
+    const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
+    r.error_estimate += integrand_rounding(c, theta_a, theta_b);
   } else {
     static_assert(QuadratureMethod<M>, "method must be a QuadratureMethod or an LaClosedForm");
-    const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
-    const double pieces = std::ceil(std::abs(theta_b - theta_a) / kMaxTurningPerPiece);
-    if (!(pieces <= kMaxPieces))
-      throw_input_error("position", "theta", theta_b,
-                        "turning of at most " + format_number(kMaxTurningPerPiece * kMaxPieces) + " rad from the reference point");
-    const long n = std::max(1L, static_cast<long>(pieces));
-    double lo = a;
-    for (long k = 1; k <= n; ++k) {
-      const double theta_k = k == n ? theta_b : theta_a + (theta_b - theta_a) * static_cast<double>(k) / static_cast<double>(n);
-      const double hi = k == n ? b : (form == Form::s ? c.s_at_theta(theta_k) : theta_k);
+    for_each_subpiece(c, form, a, b, [&](double lo, double hi) {
+      if (r.evaluations >= evaluation_budget(m)) {
+        r.status = Status::max_iterations;
+        r.message = std::string(M::name) + ": evaluation budget " + std::to_string(evaluation_budget(m)) +
+                    " of one position call exhausted after " + std::to_string(r.evaluations) +
+                    " evaluations, at " + format_number(lo) + " of [" + format_number(a) + ", " + format_number(b) +
+                    "] (pieces of " + format_number(kMaxTurningPerPiece) + " rad); raise the method's budget";
+        return false;
+      }
       auto part = form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi);
       r.value += part.value;
       r.error_estimate += part.error_estimate;
@@ -105,8 +151,9 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
         r.status = part.status;
         r.message = part.message;
       }
-      lo = hi;
-    }
+      return true;
+    });
+    const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
     r.error_estimate += integrand_rounding(c, theta_a, theta_b);
   }
   if (usable(r.status) && !(std::isfinite(r.error_estimate) && std::isfinite(std::abs(r.value)))) {
@@ -114,6 +161,51 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
     r.message = "non-finite position or error estimate";
   }
   return r;
+}
+
+/// Rk4 polyline as one Rk4Sweep from the reference point through every output point (see
+/// polyline): the same steps as integrating each piece separately, but the integrand value at a
+/// shared end is computed once (2 new evaluations per step), and the error estimate is the
+/// sweep's Richardson estimate plus integrand_rounding over the range covered so far.
+template <class F>
+void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, const F& f, std::vector<PositionResult>& out) {
+  Rk4Sweep<std::complex<double>> sweep(m);
+  const double first = form == Form::s ? out.front().point.s : out.front().point.theta;
+  const double last = form == Form::s ? out.back().point.s : out.back().point.theta;
+  sweep.reserve(std::abs(first) + std::abs(last - first));  // 0 → first → last
+  double prev = 0.0, prev_s = 0.0, length = 0.0, theta_lo = 0.0, theta_hi = 0.0;
+  double log_rho_max = 0.0;  // max |log ρ| over [theta_lo, theta_hi]: log ρ is monotone in θ
+  std::complex<double> pos{};
+  for (auto& r : out) {
+    const double next = form == Form::s ? r.point.s : r.point.theta;
+    std::complex<double> piece{};
+    if (sweep.status() == Status::ok) for_each_subpiece(c, form, prev, next, [&](double lo, double hi) {
+      piece += sweep.advance(f, lo, hi);
+      return sweep.status() == Status::ok;
+    });
+    pos += piece;
+    prev = next;
+    if (r.point.theta < theta_lo || r.point.theta > theta_hi) {
+      theta_lo = std::min(theta_lo, r.point.theta);
+      theta_hi = std::max(theta_hi, r.point.theta);
+      // |log ρ| ≤ (ilogb(max(ρ, κ)) + 1) ln 2: an upper bound without a log per point
+      log_rho_max = std::max(log_rho_max, (std::ilogb(std::max(r.point.rho, r.point.kappa)) + 1) * std::numbers::ln2);
+    }
+    length += std::abs(r.point.s - prev_s);
+    prev_s = r.point.s;
+    r.point.position = pos;
+    r.evaluations = sweep.evaluations();
+    r.form = form;
+    r.status = sweep.status();
+    r.message = sweep.message();
+    r.error_estimate = sweep.status() != Status::ok ? std::numeric_limits<double>::infinity()
+                                                    : sweep.error_estimate() + std::numeric_limits<double>::epsilon() *
+                                                                                   (1 + log_rho_max + std::max(-theta_lo, theta_hi)) * length;
+    if (r.status == Status::ok && !(std::isfinite(r.error_estimate) && std::isfinite(pos.real()) && std::isfinite(pos.imag()))) {
+      r.status = Status::numerical_failure;
+      r.message = "non-finite position or error estimate";
+    }
+  }
 }
 
 inline void merge_status(PositionResult& r, Status s, const std::string& message) {
@@ -142,7 +234,8 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
 }
 
 /// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). The
-/// positions are running integrals from the reference point, piece by piece.
+/// positions are running integrals from the reference point, piece by piece (Rk4: one sweep
+/// over all pieces sharing end values, detail::polyline_rk4).
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic) {
@@ -155,6 +248,14 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   }
   const Form used = resolve_form(c, std::min({0.0, out.front().point.theta, out.back().point.theta}),
                                  std::max({0.0, out.front().point.theta, out.back().point.theta}), form);
+  if constexpr (std::same_as<M, Rk4>) {
+    if (used == Form::s) {
+      detail::polyline_rk4(c, method, used, detail::SFormIntegrand{&c}, out);
+    } else {
+      detail::polyline_rk4(c, method, used, detail::ThetaFormIntegrand{&c}, out);
+    }
+    return out;
+  }
   auto var = [&](const CurvePoint& q) { return used == Form::s ? q.s : q.theta; };
   double prev = 0.0;
   std::complex<double> pos{};

@@ -7,6 +7,7 @@
 #include <complex>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "curves/planar/la_integrator.hpp"
@@ -200,6 +201,75 @@ TEST(LaPositions, PolylineIsUniformAndCumulative) {
   auto end = position_at(c, Parameter::s, 1.5, GaussKronrod{});
   EXPECT_LT(std::abs(pts.back().point.position - end.point.position), 1e-14);
   EXPECT_GE(pts.back().evaluations, pts[1].evaluations);
+}
+
+// Rk4 as a generic quadrature (not the Rk4 type), so polyline takes its per-piece path: the
+// reference for the cumulative sweep that polyline uses for Rk4 itself.
+struct PerPieceRk4 {
+  static constexpr std::string_view name = "rk4-per-piece";
+  Rk4 rk4;
+  void validate() const { rk4.validate(); }
+  template <class F>
+  auto integrate(F&& f, double a, double b) const {
+    return rk4.integrate(f, a, b);
+  }
+};
+
+// 002's segment as a 1001-point polyline: one RK4 sweep gives the per-piece values (same steps),
+// 2 new evaluations per step instead of 4, and both agree with Gauss-Kronrod to RK4's accuracy;
+// the sweep's estimate bounds the true error at every point. Rows: θ-form, s-form (α ≤ 1/2),
+// a polyline in s (pieces uneven in θ), and one starting away from the reference point.
+TEST(LaPositions, Rk4PolylineSweepEqualsPerPiece) {
+  struct Case {
+    double alpha, lambda;
+    Parameter p;
+    double t0, t1;
+    int n;
+    Form form;
+  };
+  for (const Case& k : {Case{2.0, 1.0, Parameter::theta, 0.0, 1.0, 1001, Form::theta},
+                        Case{-1.0, 0.417, Parameter::theta, 0.0, 1.0, 1001, Form::automatic},
+                        Case{4.0 / 3.0, 10.0, Parameter::s, 0.0, 1.2, 301, Form::theta},
+                        Case{2.0, 1.0, Parameter::theta, -0.5, 0.7, 121, Form::theta}}) {
+    SCOPED_TRACE("alpha " + std::to_string(k.alpha) + " lambda " + std::to_string(k.lambda));
+    const LaCurve c(k.alpha, k.lambda);
+    const Rk4 rk4{.h = 1e-3};
+    const auto sweep = polyline(c, k.p, k.t0, k.t1, k.n, rk4, k.form);
+    const auto per_piece = polyline(c, k.p, k.t0, k.t1, k.n, PerPieceRk4{rk4}, k.form);
+    const auto reference = polyline(c, k.p, k.t0, k.t1, k.n, GaussKronrod{}, k.form);
+    ASSERT_EQ(sweep.size(), per_piece.size());
+    for (size_t i = 0; i < sweep.size(); ++i) {
+      const auto z = sweep[i].point.position, z_old = per_piece[i].point.position, z_ref = reference[i].point.position;
+      ASSERT_EQ(sweep[i].status, Status::ok) << i;
+      ASSERT_EQ(sweep[i].form, per_piece[i].form);
+      ASSERT_LE(std::abs(z - z_old), 1e-15 * std::abs(z_old) + 1e-300) << i;
+      ASSERT_LE(std::abs(z - z_ref), 1e-10 * std::max(1.0, std::abs(z_ref))) << i;
+      ASSERT_GE(sweep[i].error_estimate, std::abs(z - z_ref) - reference[i].error_estimate) << i;
+    }
+    EXPECT_LT(sweep.back().evaluations, per_piece.back().evaluations);
+    if (k.p == Parameter::theta && k.form == Form::theta && k.t0 == 0.0)
+      EXPECT_EQ(sweep.back().evaluations, 2 * 1000 + 1);  // one step per piece of width h
+  }
+}
+
+// R6: a position far along the curve within the turning limit used to run each of its up to 10^6
+// pieces with a full budget (rk45: 6·10^6 evaluations, 1.6 s). Now one position call has the
+// method's budget: the evaluation count is bounded and the status names the budget.
+TEST(LaInvalidInput, DefaultBudgetsBoundPositionWork) {
+  const LaCurve c(0.5, 1e-300);  // 002-style curve that is a circle to double precision: s = θ
+  const auto rk45 = position_at(c, Parameter::theta, 6e7, Rk45{});
+  EXPECT_EQ(rk45.status, Status::max_iterations);
+  EXPECT_LE(rk45.evaluations, 2 * (6 * Rk45{}.max_steps + 1));
+  const auto gk = position_at(c, Parameter::theta, 6e7, GaussKronrod{});
+  EXPECT_FALSE(gk.status == Status::ok);
+  EXPECT_LE(gk.evaluations, 2 * 21 * (2 * GaussKronrod{}.max_intervals + 1));
+  const auto rk4 = position_at(c, Parameter::theta, 6e7, Rk4{});  // 6e10 steps needed: refused at once
+  EXPECT_EQ(rk4.status, Status::max_iterations);
+  EXPECT_EQ(rk4.evaluations, 0);
+  EXPECT_NE(rk4.message.find("max_steps"), std::string::npos) << rk4.message;
+  const auto line = polyline(c, Parameter::theta, 0.0, 6e7, 11, Rk4{});
+  EXPECT_EQ(line.back().status, Status::max_iterations);
+  EXPECT_EQ(line.back().evaluations, 0);
 }
 
 // RK4's observed order is 4 where the integrand is smooth (002's rows, θ ∈ [0, 1]).

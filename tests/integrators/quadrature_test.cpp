@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <complex>
+#include <string>
+#include <vector>
 
 #include "common/error.hpp"
 #include "integrators/ode.hpp"
@@ -56,8 +58,69 @@ TEST(Rk4Quadrature, ErrorEstimateTracksTrueError) {
 TEST(Rk4Quadrature, WholeNumberOfStepsDespiteRounding) {
   auto f = [](double t) { return t; };
   // 0.3 / 0.1 is 2.9999999999999996 in double; 0.0010000000000000009 / 0.001 slightly above 1.
-  EXPECT_EQ(Rk4{.h = 0.1}.integrate(f, 0.0, 0.3).evaluations, 2 * 3 + 1 + 1);  // odd n: one extra midpoint
-  EXPECT_EQ(Rk4{.h = 0.001}.integrate(f, 0.0, 0.0010000000000000009).evaluations, 2 * 1 + 1 + 1);  // n = 1: f(a) once more
+  EXPECT_EQ(Rk4{.h = 0.1}.integrate(f, 0.0, 0.3).evaluations, 2 * 3 + 1);  // odd n: no extra evaluation
+  EXPECT_EQ(Rk4{.h = 0.001}.integrate(f, 0.0, 0.0010000000000000009).evaluations, 2 * 1 + 1);  // n = 1: f(a) once
+}
+
+// Cumulative RK4 (one sweep, shared end values) against independent calls per piece: the same
+// steps, so the same values; 2 new evaluations per step instead of 4 for one-step pieces.
+TEST(Rk4Quadrature, CumulativeSweepEqualsPerPieceCalls) {
+  auto f = [](double t) { return std::complex<double>(std::cos(3 * t), std::exp(t)); };
+  std::vector<double> ts;
+  for (int k = 0; k <= 1000; ++k) ts.push_back(2.0 * k / 1000.0);  // pieces of ≈ h: one step each
+  ts.push_back(2.00037);                                          // a last piece shorter than h
+  const Rk4 rk4{.h = 0.002};
+  const auto cum = integrate_cumulative(rk4, f, ts);
+  std::complex<double> per_piece{};
+  long evaluations = 0, per_piece_evaluations = 0;
+  for (size_t k = 1; k < ts.size(); ++k) {
+    const auto piece = rk4.integrate(f, ts[k - 1], ts[k]);
+    per_piece += piece.value;
+    per_piece_evaluations += piece.evaluations;
+    evaluations += cum[k].evaluations;
+    ASSERT_LE(std::abs(cum[k].value - per_piece), 1e-15 * std::abs(per_piece)) << "k = " << k;
+    ASSERT_EQ(cum[k].status, Status::ok);
+  }
+  EXPECT_EQ(evaluations, 2 * static_cast<long>(ts.size() - 1) + 1);
+  EXPECT_EQ(per_piece_evaluations, 3 * static_cast<long>(ts.size() - 1));
+  // The sweep's estimate bounds the true error at every output point and is far below the
+  // per-piece sum (each one-step piece can only estimate by Simpson − trapezoid, O(h^3)).
+  double per_piece_estimate = 0;
+  for (size_t k = 1; k < ts.size(); ++k) {
+    const double t = ts[k];
+    const std::complex<double> exact(std::sin(3 * t) / 3.0, std::exp(t) - 1.0);
+    per_piece_estimate += rk4.integrate(f, ts[k - 1], ts[k]).error_estimate;
+    ASSERT_GE(cum[k].error_estimate, std::abs(cum[k].value - exact)) << "k = " << k;
+    ASSERT_LE(cum[k].error_estimate, per_piece_estimate) << "k = " << k;
+  }
+  const std::complex<double> exact_end(std::sin(3 * ts.back()) / 3.0, std::exp(ts.back()) - 1.0);
+  EXPECT_LE(cum.back().error_estimate, 10 * std::abs(cum.back().value - exact_end));
+}
+
+// R6: default budgets bound the work of hopeless calls by evaluation count; the status says
+// which budget stopped it. (A step budget, not a timer: the counts are deterministic.)
+TEST(QuadratureBudget, DefaultBudgetsBoundEvaluations) {
+  auto wave = [](double t) { return std::sin(t); };
+  const auto rk45 = Rk45{}.integrate(wave, 0.0, 1e300);
+  EXPECT_EQ(rk45.status, Status::max_iterations);
+  EXPECT_LE(rk45.evaluations, 6 * Rk45{}.max_steps + 1);
+  EXPECT_NE(rk45.message.find("max_steps = 100000"), std::string::npos) << rk45.message;
+
+  const auto rk4 = Rk4{}.integrate(wave, 0.0, 1e300);  // needs 1e303 steps: not run at all
+  EXPECT_EQ(rk4.status, Status::max_iterations);
+  EXPECT_EQ(rk4.evaluations, 0);
+  EXPECT_NE(rk4.message.find("max_steps = 5000000"), std::string::npos) << rk4.message;
+  EXPECT_FALSE(usable(rk4.status));
+
+  const auto gk = GaussKronrod{}.integrate(wave, 0.0, 1e7);
+  EXPECT_EQ(gk.status, Status::tolerance_not_met);
+  EXPECT_LE(gk.evaluations, 21 * (2 * GaussKronrod{}.max_intervals + 1));
+  EXPECT_NE(gk.message.find("max_intervals"), std::string::npos) << gk.message;
+
+  // Larger budgets on request through the options struct.
+  const auto rk45_more = Rk45{.max_steps = 200'000}.integrate(wave, 0.0, 1e300);
+  EXPECT_GT(rk45_more.evaluations, 6 * Rk45{}.max_steps + 1);
+  EXPECT_LE(rk45_more.evaluations, 6 * 200'000 + 1);
 }
 
 TEST(Rk4Quadrature, ReversedIntervalNegates) {
@@ -127,7 +190,7 @@ TEST(QuadratureOptions, RejectInvalidSettingsNamingTheParameter) {
   auto f = [](double t) { return t; };
   EXPECT_THROW(Rk4{.h = 0}.integrate(f, 0.0, 1.0), InputError);
   EXPECT_THROW(Rk4{.h = std::nan("")}.integrate(f, 0.0, 1.0), InputError);
-  EXPECT_THROW(Rk4{.h = 1e-12}.integrate(f, 0.0, 1e6), InputError);  // more than the step cap
+  EXPECT_THROW((Rk4{.h = 0.1, .max_steps = 0}.integrate(f, 0.0, 1.0)), InputError);
   EXPECT_THROW(GaussKronrod{.tol = -1}.integrate(f, 0.0, 1.0), InputError);
   EXPECT_THROW(Rk45{.tol = 1e-20}.integrate(f, 0.0, 1.0), InputError);
   try {
