@@ -3,7 +3,7 @@
 // (MATH.md §4): s(u) = −F_α(u)/Λ and θ(u) = −F_(α−1)(u)/Λ with u = log κ.
 //
 // Evaluation (no overflow of e^(∓α²/(4γ)), no cancellation near u = 0):
-//   |γ|u² + |αu| ≤ 3   20-point Gauss–Legendre of e^(E(t)), E(t) = γt² − αt (|E| ≤ 3 there).
+//   |γ|u² + |αu| ≤ 3   Taylor series of e^(E) about u/2, even terms only (near(); |E| ≤ 3 there).
 //                      Outside this region every difference below that could cancel has
 //                      |E(u)| > 1, so at most one bit is lost.
 //   γ > 0  F = (e^(E) D(x) − D(x0)) / √γ,              x = x0 + √γ u, x0 = −α/(2√γ)
@@ -48,6 +48,7 @@ class ExpQuadraticIntegral {
   InverseSolution polish(double target, double u, int max_iterations) const;
 
  private:
+  double near(double u) const;
   double start_ours(double target, int& iterations) const;
   InverseSolution inverse_003(double target) const;
 
