@@ -27,12 +27,27 @@ double scaled(double e, double m) {
 constexpr double kTableLo = -8.0, kTableHi = 56.0, kTableStep = 0.125;
 constexpr int kTableNodes = 513;  // (kTableHi − kTableLo)/kTableStep + 1
 
+struct StartNode {
+  double x, d1, d2;  // x, h·dx/dL, h²·d²x/dL²
+};
+using StartTable = std::array<StartNode, kTableNodes>;
+
+double hermite_start(const StartTable& table, double lo, double log_y) {
+  const double pos = (log_y - lo) / kTableStep;
+  if (!(pos >= 0.0 && pos < kTableNodes - 1)) return std::numeric_limits<double>::quiet_NaN();
+  const int j = static_cast<int>(pos);
+  const double t = pos - j, t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
+  const StartNode& a = table[static_cast<size_t>(j)];
+  const StartNode& b = table[static_cast<size_t>(j + 1)];
+  const double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5;
+  const double h2 = 0.5 * t2 - 1.5 * t3 + 1.5 * t4 - 0.5 * t5, h3 = 10 * t3 - 15 * t4 + 6 * t5;
+  const double h4 = -4 * t3 + 7 * t4 - 3 * t5, h5 = 0.5 * t3 - t4 + 0.5 * t5;
+  return a.x * h0 + a.d1 * h1 + a.d2 * h2 + b.x * h3 + b.d1 * h4 + b.d2 * h5;
+}
+
 double erfi_inv_log_start(double log_y) {
-  struct Node {
-    double x, d1, d2;  // x, h·dx/dL, h²·d²x/dL²
-  };
-  static const std::array<Node, kTableNodes> table = [] {
-    std::array<Node, kTableNodes> nodes{};
+  static const StartTable table = [] {
+    StartTable nodes{};
     for (int j = 0; j < kTableNodes; ++j) {
       const double x = special::erfi_inv_log(kTableLo + kTableStep * j, 1).value;
       const double d = special::dawson(x);
@@ -40,16 +55,27 @@ double erfi_inv_log_start(double log_y) {
     }
     return nodes;
   }();
-  const double pos = (log_y - kTableLo) / kTableStep;
-  if (!(pos >= 0.0 && pos < kTableNodes - 1)) return std::numeric_limits<double>::quiet_NaN();
-  const int j = static_cast<int>(pos);
-  const double t = pos - j, t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-  const Node& a = table[static_cast<size_t>(j)];
-  const Node& b = table[static_cast<size_t>(j + 1)];
-  const double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5;
-  const double h2 = 0.5 * t2 - 1.5 * t3 + 1.5 * t4 - 0.5 * t5, h3 = 10 * t3 - 15 * t4 + 6 * t5;
-  const double h4 = -4 * t3 + 7 * t4 - 3 * t5, h5 = 0.5 * t3 - t4 + 0.5 * t5;
-  return a.x * h0 + a.d1 * h1 + a.d2 * h2 + b.x * h3 + b.d1 * h4 + b.d2 * h5;
+  return hermite_start(table, kTableLo, log_y);
+}
+
+// x ≥ 0 with log erfc(x) = L for L in [−64, 0] (x in [0, 7.9]) to 4e-7 relative (2e-8 absolute;
+// measured), NaN outside; the γ < 0 start.
+// dx/dL = −(√π/2) erfcx(x), d²x/dL² = −(√π/2) erfcx'(x) dx/dL with erfcx' = 2x erfcx − 2/√π.
+constexpr double kErfcTableLo = -64.0;
+double erfc_inv_log_start(double log_q) {
+  static const StartTable table = [] {
+    StartTable nodes{};
+    for (int j = 0; j < kTableNodes; ++j) {
+      const double x = special::erfc_inv_log(std::min(kErfcTableLo + kTableStep * j, 0.0)).value;
+      const double e = special::erfcx(x);
+      const double d1 = -0.5 * kSqrtPi * e;
+      const double d2 = -0.5 * kSqrtPi * (2.0 * x * e - 2.0 / kSqrtPi) * d1;
+      nodes[static_cast<size_t>(j)] = {x, kTableStep * d1, kTableStep * kTableStep * d2};
+    }
+    return nodes;
+  }();
+  if (log_q == 0.0) return 0.0;
+  return hermite_start(table, kErfcTableLo, log_q);
 }
 
 }  // namespace
@@ -135,16 +161,20 @@ double ExpQuadraticIntegral::start_ours(double target, int& iterations) const {
   const double p = 2.0 * root_ / kSqrtPi * target;
   const double a = erfcx_plus_ - p, b = erfcx_minus_ + p;
   const double y2 = center_ * center_;
+  // A table start (erfc_inv_log_start, 4e-7 relative, measured) where it covers the argument.
+  auto erfc_inverse = [&](double log_q) {
+    const double x = erfc_inv_log_start(log_q);
+    if (!std::isnan(x)) return x;
+    const auto inv = special::erfc_inv_log(log_q);
+    iterations += inv.iterations;
+    return inv.value;
+  };
   if (a <= b) {
     if (!(a > 0)) return kInf;
-    const auto inv = special::erfc_inv_log(std::min(std::log(a) - y2, 0.0));
-    iterations += inv.iterations;
-    return (inv.value - center_) / root_;
+    return (erfc_inverse(std::min(std::log(a) - y2, 0.0)) - center_) / root_;
   }
   if (!(b > 0)) return -kInf;
-  const auto inv = special::erfc_inv_log(std::min(std::log(b) - y2, 0.0));
-  iterations += inv.iterations;
-  return (-inv.value - center_) / root_;
+  return (-erfc_inverse(std::min(std::log(b) - y2, 0.0)) - center_) / root_;
 }
 
 InverseSolution ExpQuadraticIntegral::inverse_003(double target) const {
