@@ -371,7 +371,8 @@ int main(int argc, char** argv) {
           "sincos, tens of ns), so time is proportional to evaluations: RK4 with h = 0.001 needs ~2000 "
           "evaluations for the endpoint and adaptive G-K only a few dozen on these smooth integrands, which "
           "reverses the paper's G-K/RK4 ratio. For a polyline the picture changes again because each of the "
-          "pieces is a separate integral (a G-K panel of 21 evaluations per piece against RK4's 3-4).";
+          "pieces is a separate integral for G-K (a panel of 21 evaluations per piece), while RK4 runs one "
+          "sweep over the whole segment that shares each piece's end value (2 new evaluations per step).";
       lac::io::write_result_table(out_dir, "p002_appendix_a_ratios", doc, t);
     }
     {  // the best-method search

@@ -9,6 +9,7 @@
 //   p002_appendix_b          the paper's cells beside ours (best reading), relative error, observed
 //                            order, error estimate, cells where the paper's reference was wrong;
 //   p002_appendix_b_readings the ranking of the candidate readings;
+//   p002_appendix_b_ratios   ours/paper per reading and h column, with a per-column verdict;
 //   p002_appendix_b_candidates every candidate error (long format, for the figure).
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -299,6 +300,82 @@ int main(int argc, char** argv) {
                      "the classical tableau it prints (whose weights 1/6, 1/3, 1/3, 1/3 as printed do not even sum "
                      "to 1).";
       lac::io::write_result_table(out_dir, "p002_appendix_b_readings", doc, t);
+    }
+
+    {  // ours/paper per reading and h (metric |dC|): does any reading reproduce every column?
+      constexpr double kMatch = 1.5;  // a column "matches" when every usable cell is within this factor
+      lac::io::Table t;
+      t.columns = {"reading", "h", "cells", "cells within x1.5", "min ours/paper", "median ours/paper", "max ours/paper",
+                   "column verdict"};
+      std::string summary;
+      std::vector<std::pair<double, std::string>> best_per_h(steps.size(), {1e300, ""});
+      std::vector<std::vector<std::string>> per_reading(rds.size());
+      for (size_t k = 0; k < rds.size(); ++k) {
+        int columns_matched = 0, columns = 0;
+        for (size_t j = 0; j < steps.size(); ++j) {
+          std::vector<double> ratios;
+          for (size_t i = 0; i < paper.size(); ++i) {
+            const auto& ref = lac::p002::find_reference(reference, rds[k].set, paper[i].alpha_text, paper[i].lambda);
+            const auto& ref_theta = lac::p002::find_reference(reference, "appendix_b", paper[i].alpha_text, paper[i].lambda);
+            if (reference_limited(i, paper[i].rk4[j]) || !cand[k][i][j].computed) continue;
+            if (paper[i].rk4[j] < kRoundoffCells * kEps * ref_theta.abs_c) continue;
+            ratios.push_back(std::max(metric_value(Metric::abs_c, cand[k][i][j].value, ref), kEps * kEps) / paper[i].rk4[j]);
+          }
+          if (ratios.empty()) continue;
+          const auto [mn, mx] = std::minmax_element(ratios.begin(), ratios.end());
+          const double worst = std::max(*mx, 1 / *mn), med = median_of(ratios);
+          ++columns;
+          const bool match = worst <= kMatch;
+          columns_matched += match;
+          const long within = std::count_if(ratios.begin(), ratios.end(), [&](double q) { return std::max(q, 1 / q) <= kMatch; });
+          if (worst < best_per_h[j].first)
+            best_per_h[j] = {worst, rds[k].key + " (median x" + fmt(med, 3) + ", worst cell x" + fmt(worst, 3) + ", " +
+                                        std::to_string(within) + " of " + std::to_string(ratios.size()) + " cells within x" +
+                                        fmt(kMatch, 2) + ")"};
+          per_reading[k].push_back("h = " + fmt(steps[j]) + ": median x" + fmt(med, 3) + ", " + std::to_string(within) +
+                                   " of " + std::to_string(ratios.size()) + " cells within x" + fmt(kMatch, 2));
+          t.add_row({rds[k].key, fmt(steps[j]), std::to_string(ratios.size()), std::to_string(within), fmt(*mn, 3),
+                     fmt(med, 3), fmt(*mx, 3),
+                     match ? "matches (every cell within x" + fmt(kMatch, 2) + ")"
+                           : "no: cells off by up to x" + fmt(worst, 3)});
+        }
+        summary += "- " + rds[k].key + ": " + std::to_string(columns_matched) + " of " + std::to_string(columns) +
+                   " h columns match" + (columns_matched == columns && columns > 0 ? " (consistent with every usable cell)" : "") + "\n";
+      }
+      std::string best_text;
+      for (size_t j = 0; j < steps.size(); ++j)
+        best_text += "h = " + fmt(steps[j]) + ": " + best_per_h[j].second + (j + 1 < steps.size() ? "; " : ".");
+      lac::io::ResultDoc doc;
+      doc.title = "002 Appendix B: ours/paper per candidate reading and step";
+      doc.command = command;
+      doc.description =
+          "For every candidate reading (keys as in p002_appendix_b_candidates; metric absolute |dC|, the best metric "
+          "in p002_appendix_b_readings) and every h column: the ratio of our error to the paper's cell over the "
+          "usable cells (not reference-limited, above " + fmt(kRoundoffCells, 2) + " eps |C|). A column matches when "
+          "every cell is within x" + fmt(kMatch, 2) + ". Readings are hypotheses about what 002 ran; nothing here is "
+          "fitted to the paper: each is a fixed published method applied with the paper's h.";
+      auto join = [](const std::vector<std::string>& v) {
+        std::string out;
+        for (size_t q = 0; q < v.size(); ++q) out += v[q] + (q + 1 < v.size() ? "; " : "");
+        return out;
+      };
+      size_t classical = 0, eighths = 0;
+      for (size_t k = 0; k < rds.size(); ++k) {
+        if (rds[k].key == "theta-form/h-in-theta") classical = k;
+        if (rds[k].three_eighths) eighths = k;
+      }
+      doc.notes = "Columns matched per reading:\n\n" + summary + "\nTightest reading per column (smallest worst-cell "
+                  "factor): " + best_text + "\n\nClassical RK4 (the tableau 002 prints), theta-form: " +
+                  join(per_reading[classical]) + ". Kutta's 3/8 rule, theta-form: " + join(per_reading[eighths]) +
+                  ".\n\nVerdict: no candidate reproduces all three columns, so no reading is proven. A fixed-step "
+                  "4th-order rule has error proportional to h^4 on these smooth integrands, so its ratio to the paper "
+                  "cannot change with h unless the paper's own errors do not fall like h^4; the paper's fall like "
+                  "h^3.6 between h = 0.1 and 0.01 (p002_appendix_b, 'order paper'), which no fixed-step 4th-order "
+                  "rule applied with step h over theta in [0, 1] does. The 3/8 rule is the closest fixed-step "
+                  "4th-order reading at h = 0.01 and 0.001 (its asymptotic error constant is 4/9 of the classical "
+                  "one) and is consistent with most cells there, but not at h = 0.1 (counts above); the classical "
+                  "tableau is further off in every column (its line above).";
+      lac::io::write_result_table(out_dir, "p002_appendix_b_ratios", doc, t);
     }
 
     {  // long format: every candidate
