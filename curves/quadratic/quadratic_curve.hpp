@@ -76,6 +76,9 @@ class QuadraticLaCurve {
   /// the double range).
   double s_at_log_kappa(double u) const;
   double theta_at_log_kappa(double u) const;
+  /// θ(u1) − θ(u0) for finite u0, u1: a local series for nearby u (no cancellation; used when
+  /// marching along the curve), the closed forms otherwise.
+  double theta_difference(double u0, double u1) const { return -theta_integral_.between(u0, u1) / lambda_; }
   /// s(κ), κ > 0.
   double s_at_kappa(double kappa) const;
   /// ds/dκ = −κ^(−α + γ log κ − 1)/Λ (MATH.md §4), κ > 0.

@@ -100,19 +100,21 @@ ExpQuadraticIntegral::ExpQuadraticIntegral(double alpha, double gamma) : alpha_(
   }
 }
 
-double ExpQuadraticIntegral::near(double u) const {
-  // Taylor series about the midpoint m = h = u/2: E(m + τ) = E(m) + bτ + γτ², b = E'(m) = γu − α,
-  //   F(u) = e^(E(m)) ∫_{−h}^{h} e^(bτ + γτ²) dτ = e^(E(m)) · 2h Σ_k d_2k/(2k + 1),
+double ExpQuadraticIntegral::midpoint_series(double v, double w) const {
+  // Taylor series about the midpoint m = (v + w)/2, h = (w − v)/2: E(m + τ) = E(m) + bτ + γτ²,
+  // b = E'(m) = 2γm − α,
+  //   ∫_v^w e^(E) = e^(E(m)) ∫_{−h}^{h} e^(bτ + γτ²) dτ = e^(E(m)) · 2h Σ_k d_2k/(2k + 1),
   // d_n = c_n h^n with c_n the Taylor coefficients of e^(bτ + γτ²) (c_(n+1) = (b c_n + 2γ c_(n−1))/(n + 1)).
-  // Only even terms survive: for γ ≥ 0 all are ≥ 0; for γ < 0 (|γ|h² ≤ 3/4 here) the sum loses
-  // at most a factor e^(2|γ|h²) ≤ 4.5 to cancellation. |bh| ≤ 3/2: ≤ 40 terms (cap 60).
+  // Only even terms survive: for γ ≥ 0 all are ≥ 0; for γ < 0 the sum loses at most a factor
+  // e^(2|γ|h²) to cancellation (≤ 4.5 in the near region, |γ|h² ≤ 3/4). With |bh| ≤ 3/2 the
+  // terms fall below rounding within 40 (cap 60).
   static constexpr auto kInv = [] {
     std::array<double, 64> a{};
     for (size_t i = 1; i < a.size(); ++i) a[i] = 1.0 / static_cast<double>(i);
     return a;
   }();
-  const double h = 0.5 * u;
-  const double p = (gamma_ * u - alpha_) * h, q = 2.0 * gamma_ * h * h;
+  const double m = 0.5 * (v + w), h = 0.5 * (w - v);
+  const double p = (2.0 * gamma_ * m - alpha_) * h, q = 2.0 * gamma_ * h * h;
   double d_prev = 1.0, d = p, sum = 1.0;  // d_0, d_1; sum of d_2k/(2k + 1)
   for (size_t n = 1; n + 2 < kInv.size(); n += 2) {
     const double even = (p * d + q * d_prev) * kInv[n + 1];  // d_(n+1), n + 1 even
@@ -123,12 +125,18 @@ double ExpQuadraticIntegral::near(double u) const {
     d_prev = even;
     d = odd;
   }
-  return std::exp(exponent(h)) * 2.0 * h * sum;
+  return std::exp(exponent(m)) * 2.0 * h * sum;
+}
+
+double ExpQuadraticIntegral::between(double v, double w) const {
+  const double h = 0.5 * (w - v), m = 0.5 * (v + w);
+  if (std::abs((2.0 * gamma_ * m - alpha_) * h) <= 1.5 && std::abs(gamma_) * h * h <= 0.75) return midpoint_series(v, w);
+  return (*this)(w) - (*this)(v);
 }
 
 double ExpQuadraticIntegral::operator()(double u) const {
   if (gamma_ == 0) return u * LaCurve::expm1_ratio(-alpha_ * u);
-  if (std::abs(gamma_) * u * u + std::abs(alpha_ * u) <= kNearRegion) return near(u);
+  if (std::abs(gamma_) * u * u + std::abs(alpha_ * u) <= kNearRegion) return midpoint_series(0.0, u);
   const double e = exponent(u);
   if (gamma_ > 0) {
     const double x = center_ + root_ * u;

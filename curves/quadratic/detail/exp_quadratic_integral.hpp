@@ -3,7 +3,7 @@
 // (MATH.md §4): s(u) = −F_α(u)/Λ and θ(u) = −F_(α−1)(u)/Λ with u = log κ.
 //
 // Evaluation (no overflow of e^(∓α²/(4γ)), no cancellation near u = 0):
-//   |γ|u² + |αu| ≤ 3   Taylor series of e^(E) about u/2, even terms only (near(); |E| ≤ 3 there).
+//   |γ|u² + |αu| ≤ 3   Taylor series of e^(E) about u/2, even terms only (midpoint_series(); |E| ≤ 3 there).
 //                      Outside this region every difference below that could cancel has
 //                      |E(u)| > 1, so at most one bit is lost.
 //   γ > 0  F = (e^(E) D(x) − D(x0)) / √γ,              x = x0 + √γ u, x0 = −α/(2√γ)
@@ -35,6 +35,9 @@ class ExpQuadraticIntegral {
   double exponent(double u) const { return (gamma_ * u - alpha_) * u; }
   /// F(u) for finite u; ±inf only where |F| exceeds the double range.
   double operator()(double u) const;
+  /// F(w) − F(v) = ∫_v^w e^(E): the midpoint series when |E'((v+w)/2)|·|w − v| ≤ 3 and
+  /// |γ|(w − v)² ≤ 3 (no cancellation, one exp; for marching), the closed forms otherwise.
+  double between(double v, double w) const;
   /// F(+∞) and F(−∞) (±inf when unbounded).
   double limit_plus() const { return limit_plus_; }
   double limit_minus() const { return limit_minus_; }
@@ -48,7 +51,7 @@ class ExpQuadraticIntegral {
   InverseSolution polish(double target, double u, int max_iterations) const;
 
  private:
-  double near(double u) const;
+  double midpoint_series(double v, double w) const;
   double start_ours(double target, int& iterations) const;
   InverseSolution inverse_003(double target) const;
 
