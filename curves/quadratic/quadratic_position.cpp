@@ -1,5 +1,6 @@
 #include "curves/quadratic/quadratic_position.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <variant>
@@ -33,18 +34,6 @@ struct Path {
   Status status = Status::ok;
 };
 
-Node node_at(const QuadraticLaCurve& c, const Node& a, double s, Status& status) {
-  // Third-order Taylor predictor of u(s) (u'' = −E' u'², u''' = (2E'² − 2γ) u'³), so that one
-  // Halley step usually lands within rounding and is accepted without a second F evaluation.
-  const double h = s - a.s, d1 = a.du_ds;
-  const double slope = 2.0 * c.gamma() * a.u - c.alpha();  // E'(u)
-  const double d2 = -slope * d1 * d1, d3 = (2.0 * slope * slope - 2.0 * c.gamma()) * d1 * d1 * d1;
-  const KappaSolution k = c.solve_kappa_near(s, a.u + h * (d1 + h * (0.5 * d2 + h * d3 / 6.0)));
-  if (k.status != Status::ok && status == Status::ok) status = k.status;
-  const double theta = a.theta + c.theta_difference(a.u, k.log_kappa);
-  return {s, k.log_kappa, theta, k.kappa, c.dlog_kappa_ds(k.log_kappa), std::polar(1.0, theta)};
-}
-
 // e^(iδ) for |δ| ≤ 0.5 by its Taylor polynomials (terms to δ^15: error < 1e-18), else polar.
 std::complex<double> small_rotation(double d) {
   if (std::abs(d) > 0.5) return std::polar(1.0, d);
@@ -54,6 +43,19 @@ std::complex<double> small_rotation(double d) {
   const double sin_d =
       d * (1 + x * (-1.0 / 6 + x * (1.0 / 120 + x * (-1.0 / 5040 + x * (1.0 / 362880 + x * (-1.0 / 39916800 + x * (1.0 / 6227020800.0 + x * (-1.0 / 1307674368000.0))))))));
   return {cos_d, sin_d};
+}
+
+Node node_at(const QuadraticLaCurve& c, const Node& a, double s, Status& status) {
+  // Third-order Taylor predictor of u(s) (u'' = −E' u'², u''' = (2E'² − 2γ) u'³), so that one
+  // Halley step usually lands within rounding and is accepted without a second F evaluation.
+  const double h = s - a.s, d1 = a.du_ds;
+  const double slope = 2.0 * c.gamma() * a.u - c.alpha();  // E'(u)
+  const double d2 = -slope * d1 * d1, d3 = (2.0 * slope * slope - 2.0 * c.gamma()) * d1 * d1 * d1;
+  const KappaSolution k = c.solve_kappa_near(s, a.u + h * (d1 + h * (0.5 * d2 + h * d3 / 6.0)));
+  if (k.status != Status::ok && status == Status::ok) status = k.status;
+  const double theta = a.theta + c.theta_difference(a.u, k.log_kappa);
+  // e^(iθ) by rotating the previous tangent (one rounding per node, no sincos).
+  return {s, k.log_kappa, theta, k.kappa, c.dlog_kappa_ds(k.log_kappa), a.tangent * small_rotation(theta - a.theta)};
 }
 
 // ∫ e^(iθ) over [a.s, b.s] with θ the quintic Hermite interpolant (θ, κ = θ', κ' = κ u' at both
@@ -128,8 +130,10 @@ std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s
   // Start at the grid point nearest the reference point s = 0 and march outward both ways, so
   // every node is a grid point (plus splits) and no node is spent between 0 and the grid.
   size_t first = 0;
-  for (size_t k = 1; k < count; ++k)
-    if (std::abs(grid(k)) < std::abs(grid(first))) first = k;
+  if (s1 != s0) {
+    const double guess = std::clamp(std::round(-s0 / (s1 - s0) * (n - 1)), 0.0, n - 1.0);
+    first = static_cast<size_t>(guess);
+  }
   std::vector<PositionResult> out(count);
   Path start;
   const Node at_first = advance(c, origin(c), grid(first), start);
