@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "common/error.hpp"
@@ -13,9 +14,20 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-/// The control triangle after swapping (short leg first) and its shape.
+/// Admissible scale of the control triangle, max |a_i − a0|: below DBL_MIN the differences are
+/// subnormal (fewer than 53 significant bits); above DBL_MAX/8 the legs (≤ 2 scale), the curve
+/// (length ≤ 3 scale) or the mapped points could overflow.
+constexpr double kMinScale = std::numeric_limits<double>::min();
+constexpr double kMaxScale = std::numeric_limits<double>::max() / 8;
+
+/// The control triangle after swapping (short leg first), divided by its scale: the construction
+/// is similarity-invariant, so angles are computed on legs of length ≤ 2 (no underflow of the
+/// turning for tiny triangles, no overflow of lengths for huge ones, R5/R8 of docs/robustness.md).
 struct Canonical {
-  Point2 b0, b1, b2;
+  Point2 origin;          ///< b0 in user coordinates (a0, or a2 when swapped)
+  double scale = 1;       ///< max |a_i − a0| (user units)
+  Point2 leg0, leg1;      ///< (b1 − b0)/scale, (b2 − b1)/scale
+  Point2 chord;           ///< (b2 − b0)/scale
   bool swapped = false;
   bool mirrored = false;  ///< b turns right
   double turning = 0;     ///< θ ∈ (0, π), unsigned
@@ -29,11 +41,26 @@ Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const 
   const char* names[6] = {"a0.x", "a0.y", "a1.x", "a1.y", "a2.x", "a2.y"};
   const double v[6] = {t.a0.real(), t.a0.imag(), t.a1.real(), t.a1.imag(), t.a2.real(), t.a2.imag()};
   for (int k = 0; k < 6; ++k) require_finite(fn, names[k], v[k]);
-  const Point2 d0 = t.a1 - t.a0, d1 = t.a2 - t.a1;
-  const double scale = std::max({std::abs(t.a0), std::abs(t.a1), std::abs(t.a2)});
-  if (std::abs(d0) <= 1e-14 * scale) throw_input_error(fn, "a1", "coincides with a0 (no start tangent)");
-  if (std::abs(d1) <= 1e-14 * scale) throw_input_error(fn, "a2", "coincides with a1 (no end tangent)");
-  const double signed_turning = std::atan2(cross(d0, d1), d0.real() * d1.real() + d0.imag() * d1.imag());
+  // Differences of finite doubles overflow to ±inf, so a non-finite scale means a side length
+  // beyond the double range.
+  const Point2 e1 = t.a1 - t.a0, e2 = t.a2 - t.a0;
+  const double scale = std::max(std::abs(e1), std::abs(e2));
+  auto range_text = [] {
+    return "[" + format_number(kMinScale) + ", " + format_number(kMaxScale) + "]";
+  };
+  if (!(scale <= kMaxScale))
+    throw_input_error(fn, "points", "max |a_i - a0| = " + format_number(scale) + " is outside " + range_text() +
+                                        " (side lengths beyond the double range)");
+  const Point2 d0 = e1, d1 = t.a2 - t.a1;  // |d1| ≤ 2·scale: finite
+  double magnitude = 0;  // largest coordinate: the resolution of the differences
+  for (double x : v) magnitude = std::max(magnitude, std::abs(x));
+  if (std::abs(d0) <= 1e-14 * magnitude) throw_input_error(fn, "a1", "coincides with a0 (no start tangent)");
+  if (std::abs(d1) <= 1e-14 * magnitude) throw_input_error(fn, "a2", "coincides with a1 (no end tangent)");
+  if (!(scale >= kMinScale))
+    throw_input_error(fn, "points", "max |a_i - a0| = " + format_number(scale) + " is outside " + range_text() +
+                                        " (side lengths below the normal double range: fewer than 53 significant bits)");
+  const Point2 u0 = d0 / scale, u1 = d1 / scale, u2 = e2 / scale;
+  const double signed_turning = std::atan2(cross(u0, u1), u0.real() * u1.real() + u0.imag() * u1.imag());
   const double theta = std::abs(signed_turning);
   if (theta < o.min_turning)
     throw_input_error(fn, "turning", theta, interval_text(o.min_turning, kPi - o.min_turning, true, true) +
@@ -43,13 +70,15 @@ Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const 
                                                 " (turning >= pi: a2 lies behind a0)");
   Canonical c;
   c.sign = signed_turning > 0 ? 1.0 : -1.0;
+  c.scale = scale;
   c.swapped = std::abs(d0) > std::abs(d1);  // 001 §4: ρ must increase from b0 to b2
-  c.b0 = c.swapped ? t.a2 : t.a0;
-  c.b1 = t.a1;
-  c.b2 = c.swapped ? t.a0 : t.a2;
-  c.mirrored = cross(c.b1 - c.b0, c.b2 - c.b1) < 0;
+  c.origin = c.swapped ? t.a2 : t.a0;
+  c.leg0 = c.swapped ? -u1 : u0;
+  c.leg1 = c.swapped ? -u0 : u1;
+  c.chord = c.swapped ? -u2 : u2;
+  c.mirrored = cross(c.leg0, c.leg1) < 0;
   c.turning = theta;
-  c.target = std::abs(std::arg((c.b2 - c.b0) / (c.b1 - c.b0)));
+  c.target = std::abs(std::arg(c.chord / c.leg0));
   return c;
 }
 
@@ -139,6 +168,25 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     t.valid = false;  // ρ, s or θ overflowed: this Λ0 is too close to the end of its range
   }
   return t;
+}
+
+/// The first user-unit result of `g` that is not a finite double (nullptr if none). ρ at the
+/// large-ρ end of the last piece may be +inf (the curve ends straight: κ underflows to 0).
+const char* unrepresentable(const G1Segment& g) {
+  auto finite = [](Point2 z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
+  if (!std::isfinite(g.length)) return "length";
+  if (!std::isfinite(g.kappa0) || !std::isfinite(g.kappa1)) return "end curvature";
+  if (!finite(g.form.scale_rotation) || !finite(g.form.offset)) return "similarity onto the control points";
+  if (g.compound && (!finite(g.joint) || !std::isfinite(g.rho_joint) || !(g.rho_joint > 0))) return "joint";
+  for (size_t i = 0; i < g.pieces.size(); ++i) {
+    const SegmentPiece& p = g.pieces[i];
+    if (!std::isfinite(p.lambda_user)) return "lambda_user";
+    if (!std::isfinite(p.length)) return "piece length";
+    if (!std::isfinite(p.rho_small) || !(p.rho_small > 0)) return "rho_small";
+    const bool last = i + 1 == g.pieces.size();
+    if (std::isnan(p.rho_large) || !(p.rho_large > 0) || (!last && std::isinf(p.rho_large))) return "rho_large";
+  }
+  return nullptr;
 }
 
 template <class M>
@@ -247,8 +295,9 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   f.mirrored = c.mirrored;
   f.swapped = c.swapped;
   auto m = [&](Point2 z) { return c.mirrored ? std::conj(z) : z; };
-  f.scale_rotation = (c.b2 - c.b0) / (m(f.end) - m(f.start));
-  f.offset = c.b0 - f.scale_rotation * m(f.start);
+  const Point2 a_scaled = c.chord / (m(f.end) - m(f.start));  // onto the triangle divided by its scale
+  f.scale_rotation = c.scale * a_scaled;
+  f.offset = c.origin - f.scale_rotation * m(f.start);
   const double k = std::abs(f.scale_rotation);
 
   const LaCurve c0(alpha0, f.lambda0);
@@ -285,16 +334,27 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   g.kappa1 = c.swapped ? kappa_b0 : kappa_b2;
 
   // Tangent check in user coordinates: mapped end tangents against the control legs.
-  auto mapped_direction = [&](double theta) { return f.scale_rotation * m(std::polar(1.0, theta)); };
+  auto mapped_direction = [&](double theta) { return a_scaled * m(std::polar(1.0, theta)); };
   const double end_tangent = f.configuration_b ? theta1 : theta0 + theta1;
-  const double e0 = std::abs(std::arg(mapped_direction(f.start_tangent) / (c.b1 - c.b0)));
-  const double e1 = std::abs(std::arg(mapped_direction(end_tangent) / (c.b2 - c.b1)));
+  const double e0 = std::abs(std::arg(mapped_direction(f.start_tangent) / c.leg0));
+  const double e1 = std::abs(std::arg(mapped_direction(end_tangent) / c.leg1));
   g.tangent_error = std::max(e0, e1);
   if (!(g.tangent_error <= o.tangent_tolerance) && usable(g.status)) {
     g.status = Status::tolerance_not_met;
     g.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(g.tangent_error) + " rad";
   }
   g.form = f;
+  // The standard-form solution is finite; its user-unit image may not be (Λ_user = Λ k^(α−1),
+  // ρ = k ρ_std and κ = 1/ρ over- or underflow for extreme α or scale). Such a curve exists
+  // but has no double-precision description: report it instead of returning inf.
+  if (usable(g.status)) {
+    const char* bad = unrepresentable(g);
+    if (bad) {
+      g.status = Status::numerical_failure;
+      g.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
+                  " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")";
+    }
+  }
   return g;
 }
 

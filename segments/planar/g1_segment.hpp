@@ -9,11 +9,15 @@
 // triangle (start, tangent intersection, end) of the standard-form curve is similar to
 // (a0, a1, a2), then map the curve onto the control points by a similarity.
 //
-// Any control triangle is accepted: any orientation and scale, mirrored (right turn), or
-// swapped (|a1 − a0| > |a2 − a1|: ρ then decreases from a0 to a2). As in 001, segment 0 is
-// always the segment at the small-ρ end (the end with the shorter control leg).
-// Degenerate input (NaN, coincident or collinear points, turning ≥ π) throws InputError; a
-// triangle outside the drawable region is Status::no_solution with the reason.
+// Any control triangle is accepted: any orientation, any scale max |a_i − a0| in
+// [DBL_MIN, DBL_MAX/8] (the angles are computed on the triangle divided by it), mirrored (right
+// turn), or swapped (|a1 − a0| > |a2 − a1|: ρ then decreases from a0 to a2). As in 001, segment 0
+// is always the segment at the small-ρ end (the end with the shorter control leg).
+// Degenerate input (NaN, coincident or collinear points, turning ≥ π, side lengths beyond the
+// double range: parameter "points") throws InputError; a triangle outside the drawable region is
+// Status::no_solution with the reason; a solution whose user-unit values (length, ρ, κ, Λ_user)
+// are not finite doubles is Status::numerical_failure. No NaN or inf in a usable result except
+// rho_large = +inf at the end of the last piece (κ underflows to 0 there).
 //
 //   lac::ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
 //   lac::G1Segment g = lac::solve_compound(t, -0.5, 1.5, 0.4);

@@ -1,4 +1,4 @@
-// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R7, R13).
+// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R13).
 // Inputs are the ones the fuzzers saved (fuzz/findings/fuzz_<target>/), reduced to the call
 // that went wrong; each test checks the correct behaviour.
 #include <gtest/gtest.h>
@@ -88,6 +88,83 @@ TEST(FuzzRegression, CliRejectsHugePointCounts) {
     EXPECT_EQ(r.status, 2) << args << ": " << r.out;
     EXPECT_NE(r.out.find("points"), std::string::npos) << r.out;
   }
+}
+
+
+double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+void expect_finite_samples(const lac::G1Segment& g, const std::string& what) {
+  for (const lac::SegmentSample& q : lac::sample_segment(g, 50)) {
+    ASSERT_TRUE(std::isfinite(q.position.real()) && std::isfinite(q.position.imag()) && std::isfinite(q.s) &&
+                std::isfinite(q.theta) && std::isfinite(q.kappa))
+        << what << ": sample at s = " << q.s;
+  }
+}
+
+// Finding R5 (by hand, lac g1): a valid tiny triangle was called collinear because the turning
+// angle underflowed (cross product of legs of length 1e-300). The construction is similarity-
+// invariant: the scaled triangles must give the unit triangle's segment, scaled.
+TEST(FuzzRegression, TinyAndHugeTrianglesSolveLikeTheUnitTriangle) {
+  const lac::ControlTriangle unit{{0, 0}, {1, 0}, {2, 1}};
+  const lac::G1Segment ref = lac::solve_g1(unit, 1.0);
+  const lac::G1Segment ref_c = lac::solve_compound(unit, 0.5, 1.5, 0.4);
+  ASSERT_EQ(ref.status, lac::Status::ok) << ref.message;
+  ASSERT_EQ(ref_c.status, lac::Status::ok) << ref_c.message;
+  for (double k : {1e-300, 1e-200, 1e300}) {
+    const lac::ControlTriangle t{unit.a0 * k, unit.a1 * k, unit.a2 * k};
+    const std::string what = "unit triangle times " + lac::format_number(k);
+    const lac::G1Segment g = lac::solve_g1(t, 1.0);
+    ASSERT_EQ(g.status, lac::Status::ok) << what << ": " << g.message;
+    EXPECT_NEAR(g.turning, std::atan(1.0), 1e-15) << what;
+    EXPECT_LE(rel(g.length / k, ref.length), 1e-13) << what;
+    EXPECT_LE(rel(g.kappa0 * k, ref.kappa0), 1e-13) << what;
+    EXPECT_LE(rel(g.pieces[0].lambda_user, ref.pieces[0].lambda_user), 1e-13) << what;  // α = 1: scale-free
+    expect_finite_samples(g, what);
+    const lac::G1Segment c = lac::solve_compound(t, 0.5, 1.5, 0.4);
+    ASSERT_EQ(c.status, lac::Status::ok) << what << ": " << c.message;
+    EXPECT_LE(rel(c.length / k, ref_c.length), 1e-13) << what;
+    EXPECT_LE(rel(c.rho_joint / k, ref_c.rho_joint), 1e-13) << what;
+    EXPECT_LE(rel(c.pieces[0].lambda_user, ref_c.pieces[0].lambda_user * std::pow(k, -0.5)), 1e-13) << what;
+    expect_finite_samples(c, what);
+  }
+  const lac::test::CliRun r = lac::test::run_lac("g1 --points '0,0 1e-300,0 2e-300,1e-300' --alpha 1");
+  EXPECT_EQ(r.status, 0) << r.out;
+}
+
+// Finding R8 (fuzz_planar_segments): a triangle with finite coordinates but side lengths beyond
+// the double range gave a usable segment of infinite length.
+TEST(FuzzRegression, OverflowingTriangleIsRejected) {
+  const lac::ControlTriangle saved{{-DBL_MAX, 7.812255859375}, {3.392578125, 1e300}, {-3.437744140625, 7.999755859375}};
+  const lac::ControlTriangle overflowing{{-DBL_MAX, 0}, {DBL_MAX, 0}, {DBL_MAX, 1}};  // a1 − a0 = inf
+  const lac::ControlTriangle subnormal{{0, 0}, {1e-310, 0}, {2e-310, 1e-310}};
+  for (const lac::ControlTriangle& t : {saved, overflowing, subnormal}) {
+    for (std::string_view name : lac::root_method_names()) {
+      lac::SegmentOptions o;
+      o.solver = lac::parse_root_method(name);
+      for (bool compound : {false, true}) {
+        try {
+          const lac::G1Segment g = compound ? lac::solve_compound(t, 0.0, 1.0, 0.5, o) : lac::solve_g1(t, 0.0, o);
+          ADD_FAILURE() << name << ": status " << lac::to_string(g.status) << ", length " << g.length
+                        << " instead of an InputError naming points";
+        } catch (const lac::InputError& e) {
+          EXPECT_EQ(e.parameter(), "points") << e.what();
+          EXPECT_NE(std::string(e.what()).find("double range"), std::string::npos) << e.what();
+        }
+      }
+    }
+  }
+}
+
+// R8's second half: the standard-form solution is finite but its user-unit image is not
+// (Λ_user = Λ k^(α−1) with k = 1e-300, α = −1): a failed status that says so, never inf.
+TEST(FuzzRegression, UnrepresentableUserUnitsAreAStatus) {
+  const double k = 1e-300;
+  const lac::G1Segment g = lac::solve_g1({{0, 0}, {k, 0}, {2 * k, k}}, -1.0);
+  EXPECT_EQ(g.status, lac::Status::numerical_failure) << g.message;
+  EXPECT_NE(g.message.find("lambda_user"), std::string::npos) << g.message;
+  EXPECT_THROW(lac::sample_segment(g, 10), lac::InputError);
+  const lac::G1Segment ok = lac::solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0);  // same shape, unit scale
+  EXPECT_EQ(ok.status, lac::Status::ok) << ok.message;
 }
 
 }  // namespace
