@@ -180,6 +180,12 @@ struct Stepper {
       State f_end = State::Zero();
       State y_new = advance(s, y, f0, hs, r.evaluations, adaptive ? &e : nullptr, &f_end);
       double factor = 1.0;
+      if (!adaptive && !y_new.allFinite()) {  // a fixed step cannot retry smaller (R11)
+        r.status = Status::numerical_failure;
+        r.message = "frenet: non-finite state at s = " + format_number(s + hs) + " (kappa = " +
+                    format_number(curve.kappa(s + hs)) + ", tau = " + format_number(curve.tau(s + hs)) + ")";
+        break;
+      }
       if (adaptive) {
         if (!std::isfinite(e) || !y_new.allFinite()) {
           h *= 0.1;
@@ -203,6 +209,11 @@ struct Stepper {
         r.error_estimate += e * (opt.atol + opt.rtol);
       }
       orthonormalize(y_new);
+      if (!y_new.allFinite()) {  // e.g. a degenerate frame after the step
+        r.status = Status::numerical_failure;
+        r.message = "frenet: non-finite state at s = " + format_number(s + hs);
+        break;
+      }
       if (cone_angle >= 0 && cone_gap(y_new, cone_angle) >= 0) {  // first meeting within this step
         const double g0 = cone_gap(y, cone_angle), g1 = cone_gap(y_new, cone_angle);
         auto gap = [&](double hh) {
@@ -235,6 +246,13 @@ struct Stepper {
     return r;
   }
 };
+
+void check_start(const Frame3& f, const char* who) {
+  const Vec3* parts[4] = {&f.p, &f.t, &f.n, &f.b};
+  const char* names[4] = {"start.p", "start.t", "start.n", "start.b"};
+  for (int i = 0; i < 4; ++i)
+    if (!parts[i]->allFinite()) throw_input_error(who, names[i], "must have finite coordinates");
+}
 
 void check_interval(const LaSpaceCurve& curve, double s0, double s1, const char* who) {
   require_finite(who, "s0", s0);
@@ -282,6 +300,7 @@ FrenetResult integrate_frenet(const LaSpaceCurve& curve, const Frame3& start, do
                               const FrenetOptions& options) {
   options.validate();
   check_interval(curve, s0, s1, "integrate_frenet");
+  check_start(start, "integrate_frenet");
   return Stepper{curve, options}.run(start, s0, s1, -1.0);
 }
 
@@ -290,6 +309,7 @@ FrenetResult integrate_to_cone(const LaSpaceCurve& curve, const Frame3& start, d
   constexpr const char* who = "integrate_to_cone";
   options.validate();
   check_interval(curve, s0, s_limit, who);
+  check_start(start, who);
   if (!(cone_angle > 0 && cone_angle < M_PI)) throw_input_error(who, "cone_angle", cone_angle, "(0, pi)");
   if (!(cone_angle_of(start.p) < cone_angle))
     throw_input_error(who, "start.p", cone_angle_of(start.p), "angle to e_x below cone_angle");
@@ -300,6 +320,7 @@ std::vector<Frame3> sample_frenet(const LaSpaceCurve& curve, const Frame3& start
                                   const FrenetOptions& options, Status* status) {
   if (n < 2) throw_input_error("sample_frenet", "n", n, "[2, inf)");
   check_interval(curve, s0, s1, "sample_frenet");
+  check_start(start, "sample_frenet");
   options.validate();
   std::vector<Frame3> out;
   out.reserve(static_cast<size_t>(n));

@@ -16,6 +16,27 @@ LaSpaceCurve::LaSpaceCurve(double alpha, double beta, double lambda, double omeg
     throw_input_error(who, "type", static_cast<double>(type), "{1, 2}");
   rho_law_ = {alpha, lambda, 0.0};
   mu_law_ = {beta, type == TorsionType::type1 ? omega : -omega, std::log(nu)};
+  // Both laws need k = rate·r0^(−slope) and slope·k as finite doubles (R11 of docs/robustness.md):
+  // otherwise the s range and every law evaluate to NaN or collapse to an empty interval.
+  constexpr double kLogMax = 709.782712893384;  // log(DBL_MAX)
+  constexpr double kMax = std::numeric_limits<double>::max();
+  if (!std::isfinite(alpha * lambda))
+    throw_input_error(who, "lambda", lambda,
+                      "[0, " + format_number(kMax / std::abs(alpha)) + "] (alpha·lambda must be a finite double; alpha = " +
+                          format_number(alpha) + ")");
+  const double nu_factor = std::exp(-beta * mu_law_.log_r0);  // ν^(−β)
+  if (!std::isfinite(nu_factor))
+    throw_input_error(who, "nu", nu,
+                      (beta > 0 ? "(" + format_number(std::exp(-kLogMax / beta)) + ", inf)"
+                                : "(0, " + format_number(std::exp(kLogMax / -beta)) + ")") +
+                          " (nu^(-beta) must be a finite double; beta = " + format_number(beta) + ")");
+  const double k = mu_law_.k();
+  if (!std::isfinite(k) || !std::isfinite(beta * k))
+    throw_input_error(who, "omega", omega,
+                      "[0, " + format_number(kMax / (nu_factor * std::max(1.0, std::abs(beta)))) +
+                          "] (omega·nu^(-beta)·max(1, |beta|) must be a finite double)");
+  const SRange r = s_range();
+  if (!(r.lo < r.hi)) throw_input_error(who, "lambda", lambda, "values with a non-empty s range");
 }
 
 SRange LaSpaceCurve::s_range() const {
@@ -23,13 +44,47 @@ SRange LaSpaceCurve::s_range() const {
   return {std::max(a.lo, b.lo), std::min(a.hi, b.hi)};
 }
 
+namespace {
+// The closed forms overflow (k·s beyond DBL_MAX) or divide inf by inf for extreme laws even for
+// s inside the s range; the angle there is not a finite double in this form, so such s are
+// rejected instead of returning NaN (R11).
+double checked_angle(double value, double s, const LaSpaceCurve& c, const char* who) {
+  if (!std::isfinite(value)) {
+    const SRange r = c.s_range();
+    throw_input_error(who, "s", s,
+                      "values in the s range " + interval_text(r.lo, r.hi) + " where the angle is a finite double");
+  }
+  return value;
+}
+
+void check_phi(double phi, const char* who) {
+  if (std::isnan(phi)) throw_input_error(who, "phi", phi, "[0, inf]");
+}
+}  // namespace
+
 // θ(s) = ∫κ ds in closed form (MATH.md §1), via the shared graph-law integral.
-double LaSpaceCurve::turning(double s) const { return rho_law_.integral_of_inverse(s); }
-double LaSpaceCurve::s_at_turning(double phi) const { return rho_law_.s_at_integral_of_inverse(phi); }
+double LaSpaceCurve::turning(double s) const {
+  return checked_angle(rho_law_.integral_of_inverse(s), s, *this, "LaSpaceCurve::turning");
+}
+double LaSpaceCurve::s_at_turning(double phi) const {
+  check_phi(phi, "LaSpaceCurve::s_at_turning");
+  return rho_law_.s_at_integral_of_inverse(phi);
+}
+double LaSpaceCurve::torsion_turning(double s) const {
+  return checked_angle(mu_law_.integral_of_inverse(s), s, *this, "LaSpaceCurve::torsion_turning");
+}
+double LaSpaceCurve::s_at_torsion_turning(double phi) const {
+  check_phi(phi, "LaSpaceCurve::s_at_torsion_turning");
+  return mu_law_.s_at_integral_of_inverse(phi);
+}
 
 double LaSpaceCurve::s_at_log_rho(double log_rho) const {
-  if (!(lambda() > 0)) throw_input_error("LaSpaceCurve::s_at_log_rho", "lambda", lambda(), "(0, inf)");
-  return log_rho / lambda() * detail::expm1_ratio(alpha() * log_rho);
+  constexpr const char* who = "LaSpaceCurve::s_at_log_rho";
+  if (!(lambda() > 0)) throw_input_error(who, "lambda", lambda(), "(0, inf)");
+  require_finite(who, "log_rho", log_rho);
+  const double s = log_rho / lambda() * detail::expm1_ratio(alpha() * log_rho);
+  if (!std::isfinite(s) || !contains(s)) throw_input_error(who, "log_rho", log_rho, "values reached inside the s range");
+  return s;
 }
 
 void LaSpaceCurve::check_s(double s, const char* name) const {

@@ -67,7 +67,8 @@ struct GraphLaw {
 /// Curvature and torsion laws of one LA space curve in standard form.
 class LaSpaceCurve {
  public:
-  /// α, β finite; Λ ≥ 0, Ω ≥ 0, ν > 0 finite. Throws InputError naming the parameter otherwise.
+  /// α, β finite; Λ ≥ 0, Ω ≥ 0, ν > 0 finite, and both laws representable: α·Λ, ν^(−β) and
+  /// Ω·ν^(−β)·max(1, |β|) finite doubles. Throws InputError naming the parameter otherwise.
   LaSpaceCurve(double alpha, double beta, double lambda, double omega, double nu, TorsionType type);
 
   double alpha() const { return rho_law_.slope; }
@@ -90,16 +91,19 @@ class LaSpaceCurve {
   double tau(double s) const { return std::exp(-log_mu(s)); }
 
   /// Total turning ∫₀^s κ du of the tangent (the planar θ(s) of MATH.md §1), s in s_range().
+  /// InputError naming "s" where the value is not a finite double (extreme laws, e.g. Λ near
+  /// DBL_MAX, where k·s overflows): never NaN.
   double turning(double s) const;
-  /// The s ≥ 0 at which the turning reaches phi ≥ 0, or +inf when it never does
-  /// (the turning is bounded for α < 1).
+  /// The s ≥ 0 at which the turning reaches phi ∈ [0, inf], or +inf when it never does
+  /// (the turning is bounded for α < 1). InputError naming "phi" for NaN.
   double s_at_turning(double phi) const;
 
   /// Total torsion angle ∫₀^s τ du (frame rotation about T) and its inverse, as above.
-  double torsion_turning(double s) const { return mu_law_.integral_of_inverse(s); }
-  double s_at_torsion_turning(double phi) const { return mu_law_.s_at_integral_of_inverse(phi); }
+  double torsion_turning(double s) const;
+  double s_at_torsion_turning(double phi) const;
 
-  /// Arc length at which ρ reaches exp(log_rho) (000 Eq. (17); MATH.md §3 s_c). Requires Λ > 0.
+  /// Arc length at which ρ reaches exp(log_rho) (000 Eq. (17); MATH.md §3 s_c). Requires Λ > 0;
+  /// InputError naming "log_rho" unless it is finite and the arc length lies in s_range().
   double s_at_log_rho(double log_rho) const;
 
   /// Throws InputError unless s lies in s_range().

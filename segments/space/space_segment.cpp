@@ -120,7 +120,7 @@ double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double tors
 }
 
 // `frenet`: integration settings (default: the options'); screening uses coarser ones.
-Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet = nullptr) {
+Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet) {
   Trial t;
   const SpaceSegmentOptions& o = *pb.opt;
   const FrenetOptions& fo = frenet ? *frenet : o.frenet;
@@ -180,6 +180,18 @@ Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptio
   t.defined = std::isfinite(t.scale) && t.scale > 0;
   if (!t.defined) t.why = "end point at the apex";
   return t;
+}
+
+// A trial whose curve laws are not representable (LaSpaceCurve rejects Λ, Ω, ν or an arc length
+// where k·s overflows: R11 of docs/robustness.md) is an undefined trial, not the caller's error.
+Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet = nullptr) {
+  try {
+    return construct_unchecked(pb, lambda0, nu0, frenet);
+  } catch (const InputError& e) {
+    Trial t;
+    t.why = std::string("trial curve not representable in double precision: ") + e.what();
+    return t;
+  }
 }
 
 double tangent_angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }

@@ -1,4 +1,4 @@
-// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R13).
+// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R11, R13).
 // Inputs are the ones the fuzzers saved (fuzz/findings/fuzz_<target>/), reduced to the call
 // that went wrong; each test checks the correct behaviour.
 #include <gtest/gtest.h>
@@ -13,6 +13,8 @@
 #include "common/error.hpp"
 #include "tests/support/run_cli.hpp"
 #include "curves/planar/la_integrator.hpp"
+#include "curves/space/frenet.hpp"
+#include "curves/space/la_space_curve.hpp"
 #include "segments/planar/g1_segment.hpp"
 #include "special/incomplete_gamma.hpp"
 
@@ -165,6 +167,71 @@ TEST(FuzzRegression, UnrepresentableUserUnitsAreAStatus) {
   EXPECT_THROW(lac::sample_segment(g, 10), lac::InputError);
   const lac::G1Segment ok = lac::solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0);  // same shape, unit scale
   EXPECT_EQ(ok.status, lac::Status::ok) << ok.message;
+}
+
+// Finding R11 (fuzz_space): space-curve laws that overflow gave an empty or NaN s range, NaN
+// angles inside the s range, and a usable Frenet integration with a NaN position.
+TEST(FuzzRegression, SpaceCurveLawsAreRepresentableOrRejected) {
+  using lac::LaSpaceCurve;
+  using lac::TorsionType;
+  const auto expect_rejected = [](auto make, const std::string& parameter, const std::string& what) {
+    try {
+      const LaSpaceCurve c = make();
+      ADD_FAILURE() << what << ": accepted, s range (" << c.s_range().lo << ", " << c.s_range().hi << ")";
+    } catch (const lac::InputError& e) {
+      EXPECT_EQ(e.parameter(), parameter) << what << ": " << e.what();
+    }
+  };
+  // The saved input: α·Λ = −inf, and ν^(−β) = inf.
+  expect_rejected([] { return LaSpaceCurve(-5.58, DBL_MAX, DBL_MAX, 5e-324, 5e-324, TorsionType::type1); }, "lambda",
+                  "LaSpaceCurve(-5.58, DBL_MAX, DBL_MAX, 5e-324, 5e-324, 1)");
+  expect_rejected([] { return LaSpaceCurve(1, DBL_MAX, 1, 5e-324, 5e-324, TorsionType::type1); }, "nu",
+                  "LaSpaceCurve(1, DBL_MAX, 1, 5e-324, 5e-324, 1)");
+  expect_rejected([] { return LaSpaceCurve(7.44, 8.0, 0, 1e300, 5e-324, TorsionType::type2); }, "nu",
+                  "LaSpaceCurve(7.44, 8, 0, 1e300, 5e-324, 2)");  // its torsion_turning(-8) was NaN
+  expect_rejected([] { return LaSpaceCurve(1, 2, 1, DBL_MAX, 1, TorsionType::type1); }, "omega",
+                  "LaSpaceCurve(1, 2, 1, DBL_MAX, 1, 1)");  // β·Ω = inf
+
+  // Accepted laws whose closed-form angle overflows inside the s range: InputError naming s.
+  const LaSpaceCurve steep(-5e-324, -5e-324, DBL_MAX, 2.89, 1, TorsionType::type1);
+  ASSERT_TRUE(steep.contains(-2.69));
+  expect_finite_or_input_error([&] { return steep.turning(-2.69); }, "s", "LaSpaceCurve(-5e-324, ...).turning(-2.69)");
+  for (double s : {-2.69, 0.5, 3.0})
+    expect_finite_or_input_error([&] { return steep.torsion_turning(s); }, "s", "torsion_turning");
+
+  const LaSpaceCurve plain(1, 1, 1, 1, 1, TorsionType::type1);
+  expect_finite_or_input_error([&] { return plain.s_at_log_rho(std::nan("")); }, "log_rho", "s_at_log_rho(NaN)");
+  EXPECT_THROW(plain.s_at_log_rho(std::nan("")), lac::InputError);
+  EXPECT_THROW(plain.s_at_turning(std::nan("")), lac::InputError);
+  EXPECT_THROW(plain.s_at_torsion_turning(std::nan("")), lac::InputError);
+  EXPECT_EQ(plain.s_at_log_rho(std::log(2.0)), 1.0);  // ρ = 1 + s
+}
+
+TEST(FuzzRegression, FrenetIntegrationNeverReturnsAUsableNan) {
+  for (lac::TorsionType type : {lac::TorsionType::type1, lac::TorsionType::type2}) {
+    // ρ overflows (κ = 0) and τ = 1/ν = inf on [1, 7]: the fixed-step rk4 state became NaN.
+    const lac::LaSpaceCurve c(-5e-324, -2.30, DBL_MAX, 1, 5e-324, type);
+    for (lac::FrenetMethod m : {lac::FrenetMethod::rk4, lac::FrenetMethod::rk45, lac::FrenetMethod::magnus6}) {
+      lac::FrenetOptions o;
+      o.method = m;
+      const lac::FrenetResult r = lac::integrate_frenet(c, lac::Frame3{}, 1, 7, o);
+      if (lac::usable(r.status)) {
+        EXPECT_TRUE(r.frame.p.allFinite() && r.frame.t.allFinite() && r.frame.n.allFinite() && r.frame.b.allFinite())
+            << lac::to_string(m) << ": usable status with position " << r.frame.p.transpose();
+      } else {
+        EXPECT_EQ(r.status, lac::Status::numerical_failure) << lac::to_string(m) << ": " << r.message;
+      }
+    }
+    if (type == lac::TorsionType::type1) {  // the saved input: rk4 must now fail instead of returning NaN
+      lac::FrenetOptions o;
+      o.method = lac::FrenetMethod::rk4;
+      EXPECT_EQ(lac::integrate_frenet(c, lac::Frame3{}, 1, 7, o).status, lac::Status::numerical_failure);
+    }
+  }
+  lac::Frame3 bad;
+  bad.p.x() = std::nan("");
+  EXPECT_THROW(lac::integrate_frenet(lac::LaSpaceCurve(1, 1, 1, 1, 1, lac::TorsionType::type1), bad, 0, 1),
+               lac::InputError);
 }
 
 }  // namespace
