@@ -6,10 +6,13 @@
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <map>
+#include <vector>
 
 #include "curves/planar/la_position.hpp"
 #include "curves/quadratic/quadratic_position.hpp"
 #include "integrators/registry.hpp"
+#include "tests/support/reference_csv.hpp"
 
 namespace lac {
 namespace {
@@ -19,6 +22,8 @@ constexpr double kMethodAgreement = 1e-9;  // rk4 h = 1e-3 (Simpson, ~h⁴), rk4
 constexpr double kGammaZeroTol = 1e-8;     // |C_quadratic(γ = ±1e-10) − C_LA| (O(γ) plus quadrature)
 constexpr double kSymmetryTol = 1e-12;     // point symmetry about the inflection, plus the error estimates
 constexpr double kHermiteTol = 1e-8;       // hermite_polyline, 1000 points, vs GK at 1e-14
+constexpr double kHermiteThetaTol = 1e-13;  // θ accumulated by local series vs closed form (relative, ≥ 1)
+constexpr double kGaussKronrodRefTol = 1e-12;  // position_at (G-K, tol 1e-14) vs mpmath
 constexpr double kLcgTol = 1e-5;           // LCG from finite differences of positions (h = 0.004, H = 0.001)
 
 TEST(QuadraticPosition, RegistryMethodsAgree) {
@@ -135,6 +140,49 @@ TEST(QuadraticPosition, HermitePolylineMatchesGaussKronrod) {
     }
   }
   std::cout << "  hermite_polyline (1000 points) vs Gauss-Kronrod: worst position error " << worst << "\n";
+}
+
+// Positions against mpmath (tests/reference/quadratic.py, kind = position: C(s) integrated in
+// u = log κ at 40 digits). Three s per set: s_a, s_m, s_b. hermite_polyline's θ is accumulated by
+// local series, so its θ is also checked against the closed form.
+TEST(QuadraticPosition, PositionsMatchMpmathReference) {
+  const auto t = test::read_reference_csv("quadratic.csv");
+  struct Ref {
+    double s;
+    std::complex<double> c;
+  };
+  std::map<std::array<double, 3>, std::vector<Ref>> sets;
+  for (size_t r = 0; r < t.rows.size(); ++r) {
+    if (t.rows[r][t.column("kind")] != "position") continue;
+    sets[{t.number(r, "alpha"), t.number(r, "gamma"), t.number(r, "lambda")}].push_back(
+        {t.number(r, "x"), {t.number(r, "v1"), t.number(r, "v2")}});
+  }
+  ASSERT_EQ(sets.size(), 6u);
+  double worst_fast = 0, worst_gk = 0, worst_theta = 0;
+  for (const auto& [p, refs] : sets) {
+    ASSERT_EQ(refs.size(), 3u);
+    const QuadraticLaCurve c(p[0], p[1], p[2]);
+    const std::string where = "alpha=" + format_number(p[0]) + " gamma=" + format_number(p[1]);
+    // The s values are exact end points of these polylines.
+    const auto ab = hermite_polyline(c, refs[0].s, refs[2].s, 1000);
+    const auto mb = hermite_polyline(c, refs[1].s, refs[2].s, 1000);
+    for (const auto& [point, ref] : {std::pair{ab.front(), refs[0]}, std::pair{mb.front(), refs[1]}, std::pair{ab.back(), refs[2]}}) {
+      ASSERT_EQ(point.point.s, ref.s);
+      const double err = std::abs(point.point.position - ref.c);
+      worst_fast = std::max(worst_fast, err);
+      EXPECT_LE(err, point.error_estimate + 1e-12) << where << " s=" << ref.s;  // the bound holds
+      EXPECT_LE(err, kHermiteTol) << where << " s=" << ref.s;
+      const double theta = c.theta_at_s(ref.s);
+      worst_theta = std::max(worst_theta, std::abs(point.point.theta - theta) / std::max(1.0, std::abs(theta)));
+      EXPECT_LE(std::abs(point.point.theta - theta), kHermiteThetaTol * std::max(1.0, std::abs(theta))) << where;
+      const auto gk = position_at(c, ref.s, GaussKronrod{});
+      const double err_gk = std::abs(gk.point.position - ref.c);
+      worst_gk = std::max(worst_gk, err_gk);
+      EXPECT_LE(err_gk, kGaussKronrodRefTol) << where << " s=" << ref.s;
+    }
+  }
+  std::cout << "  positions vs mpmath (18 points): hermite_polyline worst " << worst_fast << ", gauss-kronrod worst "
+            << worst_gk << "; hermite theta vs closed form: worst relative " << worst_theta << "\n";
 }
 
 }  // namespace

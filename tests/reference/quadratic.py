@@ -12,6 +12,9 @@ Columns: alpha, gamma, lambda, kind, x, v1, v2
   kind = bounds   x = 0,  v1 = s(κ→∞), v2 = s(κ→0)   (±inf where unbounded or beyond double)
   kind = forward  x = u (a double), v1 = s(u), v2 = θ(u)
   kind = inverse  x = s (a double), v1 = u(s) solving s(u) = x exactly, v2 = θ at that u
+  kind = position x = s (a double), v1, v2 = x, y of C(s) = ∫₀^s e^(iθ) ds, integrated in u:
+                  C = −(1/Λ) ∫₀^u(s) e^(iθ(t) + E(t)) dt (mpmath.quad at 40 digits, two
+                  subdivisions that must agree to 1e-30)
 Numbers: inputs printed with 17 significant digits (exact doubles), outputs with 20 digits.
 """
 import os
@@ -144,6 +147,32 @@ for (a, g, lam) in PARAMS:
         if ui is None or abs(ui) > 740:  # κ not representable
             continue
         rows.append((a, g, lam, "inverse", repr(sd), fmt(ui), fmt(-F(a - 1, g, ui) / lam)))
+
+# Positions: for the sets of tests/quadratic's hermite_polyline test, three s per set (near the
+# ends of the domain used there, and one inside), printed as short decimals so that the test
+# can make them exact end points of a polyline.
+POSITION_SETS = [(-1, -0.5, 1), (1, 1, 1), (3, -1, 1), (1, -30, 0.5), (0, 0, 1), (-1, 0.5, 1)]
+
+
+def position(a, g, lam, s):
+    u = inverse_u(a, g, lam, s)
+    with mp.workdps(40):
+        f = lambda t: mp.exp(1j * (-F(a - 1, g, t) / lam) + g * t * t - a * t)
+        c1 = -mp.quad(f, mp.linspace(0, u, 9)) / lam
+        c2 = -mp.quad(f, mp.linspace(0, u, 17)) / lam
+        assert abs(c1 - c2) <= mpf(10) ** -30 * max(1, abs(c2)), (a, g, lam, s, c1, c2)
+        return c2
+
+
+for (a, g, lam) in POSITION_SETS:
+    a, g, lam = float(a), float(g), float(lam)
+    fp, fm = F_limits(a, g)
+    lo = -fp / lam if mp.isfinite(fp) else mpf(-3)
+    hi = -fm / lam if mp.isfinite(fm) else mpf(3)
+    for s in (0.99 * lo, 0.3 * lo + 0.7 * hi, 0.99 * hi):
+        sd = float(mp.nstr(s, 4))
+        c = position(a, g, lam, sd)
+        rows.append((a, g, lam, "position", repr(sd), fmt(c.real), fmt(c.imag)))
 
 path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "quadratic.csv")
 with open(path, "w") as f:
