@@ -170,6 +170,12 @@ class Rk4Sweep {
   }
 
   void pair(double w, const V& simpson, const V& f_right) {
+    if (have_pending_ && w == pending_w_) {  // equal steps (one call): Simpson with step 2w
+      diff_ += pending_simpson_ + simpson - (w / 3.0) * (f_pair_left_ + 4.0 * f_left_ + f_right);
+      paired_ += 2;
+      have_pending_ = false;
+      return;
+    }
     const double ratio = have_pending_ ? w / pending_w_ : 0.0;
     if (have_pending_ && ratio >= 0.5 && ratio <= 2.0) {
       const double w1 = pending_w_, sum = w1 + w;  // nodes a, a + w1, a + w1 + w: exact for quadratics

@@ -85,6 +85,10 @@ inline constexpr double kMaxPieces = 1e6;
 /// variable of `form`: at most kMaxTurningPerPiece of turning each. InputError beyond kMaxPieces.
 template <class Visit>
 void for_each_subpiece(const LaCurve& c, Form form, double a, double b, Visit&& visit) {
+  if (form == Form::theta && std::abs(b - a) <= kMaxTurningPerPiece) {  // the common case: one piece
+    visit(a, b);
+    return;
+  }
   const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
   const double pieces = std::ceil(std::abs(theta_b - theta_a) / kMaxTurningPerPiece);
   if (!(pieces <= kMaxPieces))
