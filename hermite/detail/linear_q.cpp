@@ -130,7 +130,7 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& s
   return graded(phi, ua, ub, 0.0, 1, panels, evaluations);
 }
 
-std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg) {
+std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg, double tolerance) {
   thread_local boost::math::quadrature::tanh_sinh<double> ts;  // integrate() is non-const
   std::vector<double> cuts{seg.ua};
   if (seg.qa * seg.qb < 0) cuts.push_back(seg.ua - seg.qa / seg.slope());
@@ -139,7 +139,7 @@ std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQ
   // One complex-valued integral per piece (Boost ≥ 1.72 accepts complex integrands): cos and sin
   // share each evaluation of φ, half the cost of two real integrals.
   const auto f = [&](double u) { return std::polar(1.0, seg.phi_at(law, u)); };
-  for (size_t k = 0; k + 1 < cuts.size(); ++k) sum += ts.integrate(f, cuts[k], cuts[k + 1], 1e-15);
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) sum += ts.integrate(f, cuts[k], cuts[k + 1], tolerance);
   return sum;
 }
 

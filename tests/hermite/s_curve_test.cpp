@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "common/error.hpp"
 #include "hermite/detail/linear_q.hpp"
@@ -129,6 +130,39 @@ TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
     }
   }
   std::printf("worst graded Gauss-Legendre vs tanh-sinh (relative to length): %.3e\n", worst);
+}
+
+TEST(LinearQ, ReferenceToleranceIsNotTheAccuracyLimit) {
+  // The residual check's tanh-sinh at its default tolerance against the same rule at 1e-15, on the
+  // segments of solved G2 problems (random end data as bench_hermite; zeros of q inside, at and
+  // near segment ends) and S-curves: the default tolerance must not cost accuracy above 1e-14.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2), curvature(-3, 3);
+  double worst = 0;
+  int segments = 0;
+  auto compare = [&](const detail::LaLaw& law, const detail::LinearQSegment& seg) {
+    const auto a = detail::integrate_tangent_reference(law, seg);
+    const auto b = detail::integrate_tangent_reference(law, seg, 1e-15);
+    const double e = std::abs(a - b) / seg.length();
+    worst = std::max(worst, e);
+    ++segments;
+    EXPECT_LE(e, 1e-14) << "alpha " << law.alpha << " q " << seg.qa << ".." << seg.qb;
+  };
+  for (double alpha : {-0.5, -2.0, -4.0}) {
+    for (int i = 0; i < 40; ++i) {
+      const double t0 = angle(rng), k0 = curvature(rng), t1 = angle(rng), k1 = curvature(rng);
+      const G2Result r = solve_g2({{{0, 0}, t0, k0}, {{1, 0}, t1, k1}, alpha});
+      if (usable(r.status))
+        for (const auto& seg : r.curve.segments) compare(r.curve.law, seg);
+      const Points P{std::complex<double>(0, 0), std::polar(1.0 / 3, t0),
+                     std::complex<double>(1, 0) - std::polar(1.0 / 3, t1), std::complex<double>(1, 0)};
+      const SCurveResult c = solve_s_curve(P, alpha);
+      if (usable(c.status)) compare(c.law, c.standard);
+    }
+  }
+  EXPECT_GT(segments, 300);
+  std::printf("worst tanh-sinh at tolerance %g vs 1e-15 (relative to length, %d segments): %.3e\n",
+              detail::kReferenceTolerance, segments, worst);
 }
 
 TEST(LinearQ, DividedDifferenceIsTheArcLimit) {
