@@ -275,11 +275,13 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
       "needs κ(s) and θ(s), each quadrature node one κ(s) inversion; rk4 takes one step per segment (3 evaluations "
       "per segment). `end-point error`: distance of the last point from the same polyline by Gauss–Kronrod at tol 1e-14.";
   doc.notes =
-      "Issue 7's targets are κ(s) ≤ 200 ns and a 1000-point curve ≤ 200 µs. The generic quadrature path cannot "
-      "meet the curve target: every integrand evaluation inverts κ(s) (one erfi⁻¹/erfc⁻¹ start and a Halley "
-      "polish), so a 1000-point curve costs at least ~3000 inversions. `hermite_polyline` marches instead: one "
-      "warm-started Halley inversion and one closed-form θ per point, 4 sincos per segment (segments split where "
-      "the tangent turns > 0.25 rad or log κ changes > 0.05).";
+      "Issue 7's targets are κ(s) ≤ 200 ns and a 1000-point curve ≤ 200 µs (CPU time in `bench_quadratic`, "
+      "docs/quadratic.md). κ(s): a table start for erfi⁻¹/erfc⁻¹ in log form and one Halley step on the closed form "
+      "(accepted when its cubic error term is below rounding). The generic quadrature path cannot meet the curve "
+      "target: every integrand evaluation inverts κ(s), so a 1000-point curve costs at least ~3000 inversions. "
+      "`hermite_polyline` marches instead: per node one Halley step from a third-order Taylor predictor, θ by a local "
+      "series from the previous node, the tangent by rotating the previous one (no sincos), 4-point Gauss–Legendre "
+      "on the quintic Hermite θ (segments split where the tangent turns > 0.25 rad or log κ changes > 0.05).";
   lac::io::write_result_table(out, "quadratic_timing", doc, t);
 }
 

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Before/after table of bench_quadratic (issue 7) from two committed Google Benchmark JSON files.
+
+Usage: quadratic_bench.py RESULTS_DIR
+Reads RESULTS_DIR/quadratic_bench_before.json and quadratic_bench_after.json (written by
+build/bench_quadratic --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+--benchmark_out=FILE --benchmark_out_format=json) and writes RESULTS_DIR/quadratic_bench.md:
+median CPU time per benchmark (the machine is shared, CPU time is the less noisy measure).
+"""
+import json
+import os
+import sys
+
+# Issue 7's targets. κ(s) by 003's hybrid inverse (benchmark argument 1) is there for comparison only.
+TARGETS = {"BM_KappaOfS": (200e-9, "≤ 200 ns"), "BM_HermitePolyline1000": (200e-6, "≤ 200 µs"),
+           "BM_Polyline1000": (200e-6, "≤ 200 µs")}
+SCALE = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
+
+
+def medians(path):
+    with open(path) as f:
+        data = json.load(f)
+    out = {}
+    for b in data["benchmarks"]:
+        if b.get("aggregate_name") != "median":
+            continue
+        name = b["run_name"]
+        out[name] = (b["cpu_time"] * SCALE[b["time_unit"]], b.get("label", ""))
+    return out, data["context"].get("date", "?")
+
+
+def show(seconds):
+    for unit, scale in (("ns", 1e-9), ("µs", 1e-6), ("ms", 1e-3)):
+        if seconds < 1000 * scale or unit == "ms":
+            return "%.3g %s" % (seconds / scale, unit)
+
+
+def main():
+    results = sys.argv[1] if len(sys.argv) > 1 else "results"
+    before_path = os.path.join(results, "quadratic_bench_before.json")
+    after_path = os.path.join(results, "quadratic_bench_after.json")
+    if not (os.path.exists(before_path) and os.path.exists(after_path)):
+        print("quadratic_bench.py: no benchmark JSON in %s, nothing to do" % results)
+        return
+    before, date_before = medians(before_path)
+    after, date_after = medians(after_path)
+    lines = [
+        "# bench_quadratic: median CPU time before and after the issue 7 optimisations",
+        "",
+        "Written by `experiments/figures/quadratic_bench.py` from `quadratic_bench_before.json` (%s) and "
+        "`quadratic_bench_after.json` (%s), each from `build/bench_quadratic --benchmark_repetitions=3 "
+        "--benchmark_report_aggregates_only=true --benchmark_out=FILE --benchmark_out_format=json` on a shared "
+        "2-core machine (CPU time: the wall time includes waiting for the other jobs)." % (date_before, date_after),
+        "",
+        "| benchmark | what | CPU before | CPU after | after/before | target | met |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for name, (t_after, label) in after.items():
+        t_before = before.get(name, (None, ""))[0]
+        family = name.split("/")[0]
+        target, target_text = TARGETS.get(family, (None, ""))
+        if "hybrid-003" in label:
+            target, target_text = None, "– (003's inverse, comparison)"
+        met = "" if target is None else ("yes" if t_after <= target else "no")
+        lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+            name, label, show(t_before) if t_before else "–", show(t_after),
+            "%.2f" % (t_after / t_before) if t_before else "–", target_text, met))
+    path = os.path.join(results, "quadratic_bench.md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote " + path)
+
+
+if __name__ == "__main__":
+    main()
