@@ -75,10 +75,16 @@ TEST(HermiteRobustness, R10SCurveWithOverflowingLengthIsNotUsable) {
 }
 
 TEST(HermiteRobustness, SCurveWithOverflowingDifferencesThrowsNamingPoints) {
-  expect_input_error([] { solve_s_curve(Points{{{-kMax, 0}, {0, 1}, {1, 1}, {kMax, 0}}}, -1.0); }, "points",
-                     "double range");
-  expect_input_error([] { solve_s_curve(Points{{{0, 0}, {kMax, -kMax}, {1, 1}, {2, 0}}}, -2.0); }, "points",
-                     "double range");
+  expect_input_error(
+      [] {
+        solve_s_curve(Points{{{-kMax, 0}, {0, 1}, {1, 1}, {kMax, 0}}}, -1.0);
+      },
+      "points", "double range");
+  expect_input_error(
+      [] {
+        solve_s_curve(Points{{{0, 0}, {kMax, -kMax}, {1, 1}, {2, 0}}}, -2.0);
+      },
+      "points", "double range");
 }
 
 TEST(HermiteRobustness, SCurveIsSimilarityInvariantAtExtremeScales) {
@@ -107,7 +113,11 @@ TEST(HermiteRobustness, G2WithOverflowingChordThrowsNamingP1) {
 
 TEST(HermiteRobustness, G2WithCurvatureTimesChordOverflowingThrowsNamingKappa) {
   expect_input_error([] { solve_g2({{{0, 0}, 0.3, 1e300}, {{1e10, 0}, -0.3, -1}, -0.5}); }, "kappa0", "must be finite");
-  expect_input_error([] { solve_g2({{{0, 0}, 0.3, 1}, {{0, -1e10}, -0.3, -1e300}, -0.5}); }, "kappa1", "must be finite");
+  expect_input_error(
+      [] {
+        solve_g2({{{0, 0}, 0.3, 1}, {{0, -1e10}, -0.3, -1e300}, -0.5});
+      },
+      "kappa1", "must be finite");
   // κ·|p1 − p0| = 1e300 is representable: no curve is found, and nothing non-finite escapes.
   for (G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
     G2Options o;
