@@ -254,7 +254,7 @@ RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
   const SpaceSegmentOptions& o = *pb.opt;
   RunOutcome out;
   auto trial = [&](const Vec2& x) -> std::optional<Trial> {
-    if (!in_box(x)) return std::nullopt;
+    if (!in_box(x) || ode_evals >= o.max_ode_evaluations) return std::nullopt;  // budget spent: undefined
     Trial t = construct(pb, std::exp(x[0]), std::exp(x[1]));
     ode_evals += t.ode_evaluations;
     if (!t.defined) return std::nullopt;
@@ -343,7 +343,7 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   coarse.h = std::max(coarse.h, 1e-2);
   auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const FrenetOptions* fo) {
     for (int h = 0; h < hands; ++h) {
-      if (!in_box(x)) continue;
+      if (!in_box(x) || ode >= opt.max_ode_evaluations) continue;
       const Trial t = construct(problems[h], std::exp(x[0]), std::exp(x[1]), fo);
       ode += t.ode_evaluations;
       ++evals;
@@ -386,15 +386,22 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   if (first.size() > 1) grid.push_back(first[1]);
   std::sort(grid.begin(), grid.end(), by_error);
   for (const Candidate& c : grid) {
-    if (runs >= opt.max_starts) break;
+    if (runs >= opt.max_starts || ode >= opt.max_ode_evaluations) break;
     if (auto r = attempt(c)) return *r;
   }
   SpaceSegmentResult r;
   r.solver = opt.solver;
-  r.status = Status::no_solution;
   r.tangent_error = kInf;
-  r.message = std::string(to_string(opt.solver)) + ": no curve met the end tangent within " + std::to_string(runs) +
-              " solver runs (" + last_message + ")";
+  if (ode >= opt.max_ode_evaluations) {
+    r.status = Status::max_iterations;
+    r.message = std::string(to_string(opt.solver)) + ": Frenet evaluation budget max_ode_evaluations = " +
+                std::to_string(opt.max_ode_evaluations) + " spent after " + std::to_string(runs) + " solver runs (" +
+                last_message + ")";
+  } else {
+    r.status = Status::no_solution;
+    r.message = std::string(to_string(opt.solver)) + ": no curve met the end tangent within " + std::to_string(runs) +
+                " solver runs (" + last_message + ")";
+  }
   r.iterations = iterations;
   r.evaluations = evals;
   r.ode_evaluations = ode;
@@ -449,6 +456,8 @@ void SpaceSegmentOptions::validate() const {
   if (!(nu_start > 0) || !std::isfinite(nu_start)) throw_input_error(who, "nu_start", nu_start, "(0, inf)");
   if (max_starts < 1) throw_input_error(who, "max_starts", max_starts, "[1, inf)");
   if (max_evaluations < 10) throw_input_error(who, "max_evaluations", static_cast<double>(max_evaluations), "[10, inf)");
+  if (max_ode_evaluations < 1)
+    throw_input_error(who, "max_ode_evaluations", static_cast<double>(max_ode_evaluations), "[1, inf)");
 }
 
 SpaceSegmentResult solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,

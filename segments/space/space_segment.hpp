@@ -67,6 +67,11 @@ struct SpaceSegmentOptions {
   int max_starts = 6;
   bool allow_mirror = true;          ///< also try the mirror-image (negative torsion) problem
   long max_evaluations = 1500;       ///< curve constructions per solver run
+  /// Frenet right-hand-side evaluations over the whole call (screening and every run): when spent,
+  /// no further trial is integrated and the result is max_iterations. 10^7 is ~1 s of CPU
+  /// (unsanitized); the drawable cases need ≤ 10^5 with magnus6/rk45 and ~2·10^6 with rk4 and the
+  /// simplex. Without it, rk4 (h = 1e-3) on awkward input ran 1.5·10^8 evaluations (13 s).
+  long max_ode_evaluations = 10'000'000;
   void validate() const;
 };
 

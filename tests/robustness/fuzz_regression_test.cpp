@@ -1,4 +1,4 @@
-// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R11, R13).
+// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R11, R13, R14).
 // Inputs are the ones the fuzzers saved (fuzz/findings/fuzz_<target>/), reduced to the call
 // that went wrong; each test checks the correct behaviour.
 #include <gtest/gtest.h>
@@ -16,6 +16,7 @@
 #include "curves/space/frenet.hpp"
 #include "curves/space/la_space_curve.hpp"
 #include "segments/planar/g1_segment.hpp"
+#include "segments/space/space_segment.hpp"
 #include "special/incomplete_gamma.hpp"
 
 namespace {
@@ -232,6 +233,26 @@ TEST(FuzzRegression, FrenetIntegrationNeverReturnsAUsableNan) {
   bad.p.x() = std::nan("");
   EXPECT_THROW(lac::integrate_frenet(lac::LaSpaceCurve(1, 1, 1, 1, 1, lac::TorsionType::type1), bad, 0, 1),
                lac::InputError);
+}
+
+// Finding R14 (fuzz_space, short run): a space solver with rk4 ran 1.5e8 Frenet evaluations
+// (13 s CPU unsanitized) on awkward input: every trial hit the step cap. The call now stops at
+// max_ode_evaluations (default 1e7) with status max_iterations.
+TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
+  const double a = -1.403854810178018e-11, b = 7.999755859375;
+  const lac::SpaceEndpoints ends{{a, a, a}, {31740, b, b}, {b, b, b}, {b, b, b}};
+  const lac::G1SpaceSpec spec{1.000000000000001, 1e300, 0.0, lac::TorsionType::type2};
+  lac::SpaceSegmentOptions o;
+  o.solver = lac::SpaceSolver::newton;
+  o.frenet.method = lac::FrenetMethod::rk4;
+  const lac::SpaceSegmentResult r = lac::solve_g1_space_segment(ends, spec, o);
+  EXPECT_EQ(r.status, lac::Status::max_iterations) << r.message;
+  EXPECT_NE(r.message.find("max_ode_evaluations"), std::string::npos) << r.message;
+  // At most one construction (two pieces of ≤ 20000 rk4 steps, 4 evaluations each, plus the
+  // event location) beyond the budget.
+  EXPECT_LE(r.ode_evaluations, o.max_ode_evaluations + 200'000);
+  o.max_ode_evaluations = 0;
+  EXPECT_THROW(lac::solve_g1_space_segment(ends, spec, o), lac::InputError);
 }
 
 }  // namespace
