@@ -7,7 +7,9 @@
 //                            with an observer collecting the 1001 step points (4 evaluations per
 //                            step, as 002's Butcher tableau), the library polyline of 1001 points
 //                            (one RK4 sweep, 2 new evaluations per step), and the 1001 frames alone
-//                            (LaCurve::frame_at: the polyline's cost that is not quadrature).
+//                            (as polyline computes them: both ends' domain checked once, then
+//                            LaCurve::frame_inside per point; the polyline's cost that is not
+//                            quadrature).
 // Targets (issue 4): best endpoint ≤ 1e-13 relative in ≤ 2 µs median on every row; RK4 h = 0.001
 // over a segment ≤ 150 µs median. Run with --benchmark_repetitions=5 for medians; the machine is
 // shared, so compare methods within one run.
@@ -98,14 +100,18 @@ void segment_polyline(benchmark::State& state, lac::p002::ReferenceEnd ref) {
   state.counters["evaluations"] = static_cast<double>(line.back().evaluations);
 }
 
-/// The 1001 frames (s, θ, ρ, κ) alone, as polyline computes them before integrating: the part
-/// of the polyline time that is not quadrature.
+/// The 1001 frames (s, θ, ρ, κ) alone, as polyline computes them before integrating (domain
+/// checked at both ends, then frame_inside per point): the part of the polyline time that is
+/// not quadrature.
 void segment_frames(benchmark::State& state, lac::p002::ReferenceEnd ref) {
   const lac::LaCurve curve(ref.alpha, ref.lambda);
   std::vector<lac::CurvePoint> frames(1001);
   for (auto _ : state) {
+    curve.check(lac::Parameter::theta, 0.0, "theta");
+    curve.check(lac::Parameter::theta, ref.theta_end, "theta");
     for (int k = 0; k < 1001; ++k)
-      frames[static_cast<size_t>(k)] = curve.frame_at(lac::Parameter::theta, k == 1000 ? ref.theta_end : ref.theta_end * k / 1000.0);
+      frames[static_cast<size_t>(k)] =
+          curve.frame_inside(lac::Parameter::theta, k == 1000 ? ref.theta_end : ref.theta_end * k / 1000.0);
     benchmark::DoNotOptimize(frames.data());
   }
 }

@@ -22,18 +22,10 @@ double representable(double value, bool positive, const LaCurve& c, const char* 
 LaCurve::LaCurve(double alpha, double lambda) : alpha_(alpha), lambda_(lambda) {
   require_finite("LaCurve", "alpha", alpha);
   if (!(lambda >= 0) || !std::isfinite(lambda)) throw_input_error("LaCurve", "lambda", lambda, "[0, inf)");
-}
-
-Interval LaCurve::theta_domain() const {
-  if (lambda_ == 0 || alpha_ == 1) return {};
-  if (alpha_ < 1) return {-kInf, 1.0 / ((1.0 - alpha_) * lambda_)};
-  return {-1.0 / ((alpha_ - 1.0) * lambda_), kInf};
-}
-
-Interval LaCurve::s_domain() const {
-  if (lambda_ == 0 || alpha_ == 0) return {};
-  if (alpha_ < 0) return {-kInf, -1.0 / (alpha_ * lambda_)};
-  return {-1.0 / (alpha_ * lambda_), kInf};
+  if (lambda_ > 0 && alpha_ < 1) theta_domain_ = {-kInf, 1.0 / ((1.0 - alpha_) * lambda_)};
+  if (lambda_ > 0 && alpha_ > 1) theta_domain_ = {-1.0 / ((alpha_ - 1.0) * lambda_), kInf};
+  if (lambda_ > 0 && alpha_ < 0) s_domain_ = {-kInf, -1.0 / (alpha_ * lambda_)};
+  if (lambda_ > 0 && alpha_ > 0) s_domain_ = {-1.0 / (alpha_ * lambda_), kInf};
 }
 
 void LaCurve::check(Parameter p, double t, const char* name) const {
@@ -64,10 +56,12 @@ double LaCurve::kappa_at_theta(double theta) const {
 }
 double LaCurve::kappa_at_s(double s) const { return representable(std::exp(-log_rho_at_s(s)), true, *this, "s", s); }
 
+// One domain check and one log ρ (it used to be computed by log_rho_at_theta and again here).
 double LaCurve::s_at_theta(double theta) const {
-  const double log_rho = log_rho_at_theta(theta);  // checks the domain
-  return representable(theta * log1p_ratio((alpha_ - 1.0) * lambda_ * theta) * expm1_ratio(alpha_ * log_rho), false,
-                       *this, "theta", theta);
+  check(Parameter::theta, theta, "theta");
+  double s = 0;
+  representable(log_rho_and_other(Parameter::theta, theta, s), false, *this, "theta", theta);
+  return representable(s, false, *this, "theta", theta);
 }
 
 double LaCurve::theta_at_s(double s) const {
@@ -95,20 +89,14 @@ double LaCurve::s_at_log_rho(double log_rho) const {
 }
 
 CurvePoint LaCurve::frame_at(Parameter p, double t) const {
-  const char* name = p == Parameter::theta ? "theta" : "s";
-  check(p, t, name);
-  CurvePoint c;
-  const double log_rho = p == Parameter::theta ? log_rho_at_theta(t) : log_rho_at_s(t);
-  c.theta = to_theta(p, t);
-  c.s = to_s(p, t);
-  c.rho = std::exp(log_rho);
-  c.kappa = std::exp(-log_rho);
-  if (!std::isfinite(c.s) || !std::isfinite(c.theta) || !(c.rho > 0) || !std::isfinite(c.rho) || !(c.kappa > 0) ||
-      !std::isfinite(c.kappa)) {
-    throw_input_error("LaCurve(alpha=" + format_number(alpha_) + ", lambda=" + format_number(lambda_) + ")", name, t,
-                      "where rho, s and theta are representable doubles (log rho = " + format_number(log_rho) + " here)");
-  }
-  return c;
+  check(p, t, p == Parameter::theta ? "theta" : "s");
+  return frame_inside(p, t);
+}
+
+void LaCurve::throw_unrepresentable(Parameter p, double t, double log_rho) const {
+  throw_input_error("LaCurve(alpha=" + format_number(alpha_) + ", lambda=" + format_number(lambda_) + ")",
+                    p == Parameter::theta ? "theta" : "s", t,
+                    "where rho, s and theta are representable doubles (log rho = " + format_number(log_rho) + " here)");
 }
 
 }  // namespace lac

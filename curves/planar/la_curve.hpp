@@ -41,9 +41,9 @@ class LaCurve {
   double alpha() const { return alpha_; }
   double lambda() const { return lambda_; }
 
-  /// Open domains of θ and s (001 Table 1 as restated in MATH.md §1).
-  Interval theta_domain() const;
-  Interval s_domain() const;
+  /// Open domains of θ and s (001 Table 1 as restated in MATH.md §1), computed once.
+  Interval theta_domain() const { return theta_domain_; }
+  Interval s_domain() const { return s_domain_; }
   Interval domain(Parameter p) const { return p == Parameter::theta ? theta_domain() : s_domain(); }
 
   /// Closed-form conversions. Arguments must lie in the open domain (InputError otherwise).
@@ -72,9 +72,9 @@ class LaCurve {
     return x * log1p_ratio((alpha_ - 1.0) * x);
   }
   double theta_at_s_unchecked(double s) const {
-    const double x = lambda_ * s;
-    const double log_rho = x * log1p_ratio(alpha_ * x);
-    return s * log1p_ratio(alpha_ * x) * expm1_ratio((alpha_ - 1.0) * log_rho);
+    double theta = 0;
+    log_rho_and_other(Parameter::s, s, theta);
+    return theta;
   }
 
   /// g(x) = log1p(x)/x and h(y) = expm1(y)/y, both continuous (= 1) at 0.
@@ -85,9 +85,44 @@ class LaCurve {
   /// representable in double there (overflow near an open end of the domain).
   CurvePoint frame_at(Parameter p, double t) const;
 
+  /// frame_at for a t already known to lie inside the open domain (e.g. between the checked ends
+  /// of a polyline): no domain check, but still an InputError where the point is not
+  /// representable. One log1p, one expm1 and one exp: log ρ is computed once and ρ, κ and the
+  /// other parameter derive from it.
+  CurvePoint frame_inside(Parameter p, double t) const {
+    CurvePoint c;
+    const double log_rho = log_rho_and_other(p, t, p == Parameter::theta ? c.s : c.theta);
+    (p == Parameter::theta ? c.theta : c.s) = t;
+    c.rho = std::exp(log_rho);
+    // 1/ρ carries ρ's rounding plus one; below DBL_MIN ρ is subnormal (few bits), so take e^(−log ρ).
+    c.kappa = c.rho >= std::numeric_limits<double>::min() ? 1.0 / c.rho : std::exp(-log_rho);
+    if (!(std::isfinite(c.s) && std::isfinite(c.theta) && c.rho > 0 && c.rho <= std::numeric_limits<double>::max() &&
+          c.kappa > 0 && c.kappa <= std::numeric_limits<double>::max()))
+      throw_unrepresentable(p, t, log_rho);
+    return c;
+  }
+
  private:
+  /// log ρ at θ (or s), and the other parameter s (or θ) into `other`, sharing g:
+  ///   θ given: x = Λθ, g = g((α−1)x), log ρ = x g, s = θ g h(α log ρ)
+  ///   s given: x = Λs, g = g(αx),     log ρ = x g, θ = s g h((α−1) log ρ)
+  /// No checks; the results may be non-finite outside the representable range. g·h is formed
+  /// first: at extreme α, Λ the two factors compensate (e.g. 7e-298 and 1.4e297 for α = Λ = 1e300,
+  /// θ = 1e-300, s = 1e-300), where t·g would underflow to 0.
+  double log_rho_and_other(Parameter p, double t, double& other) const {
+    const double x = lambda_ * t;
+    const bool at_theta = p == Parameter::theta;
+    const double g = log1p_ratio((at_theta ? alpha_ - 1.0 : alpha_) * x);
+    const double log_rho = x * g;
+    other = t * (g * expm1_ratio((at_theta ? alpha_ : alpha_ - 1.0) * log_rho));
+    return log_rho;
+  }
+  [[noreturn]] void throw_unrepresentable(Parameter p, double t, double log_rho) const;
+
   double alpha_;
   double lambda_;
+  Interval theta_domain_;
+  Interval s_domain_;
 };
 
 }  // namespace lac

@@ -67,6 +67,28 @@ struct SFormIntegrand {
   std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
 };
 
+/// The integrands of an RK4 polyline, whose sweep evaluates each output point (a piece end)
+/// once: there ρ (θ-form) or θ (s-form) is taken from that point's frame instead of being
+/// recomputed (the frame computes it with the same operations, so the value is the same bit for
+/// bit), leaving one sincos. `known` is the point's parameter; NaN (never equal) when the frame's
+/// parameter is not the integration variable.
+struct ThetaFormIntegrandAtFrames {
+  const LaCurve* c;
+  double known = std::numeric_limits<double>::quiet_NaN(), known_rho = 1;
+  void set_known(const CurvePoint& q) { known = q.theta, known_rho = q.rho; }
+  std::complex<double> operator()(double psi) const {
+    return std::polar(psi == known ? known_rho : std::exp(c->log_rho_at_theta_unchecked(psi)), psi);
+  }
+};
+struct SFormIntegrandAtFrames {
+  const LaCurve* c;
+  double known = std::numeric_limits<double>::quiet_NaN(), known_theta = 0;
+  void set_known(const CurvePoint& q) { known = q.s, known_theta = q.theta; }
+  std::complex<double> operator()(double u) const {
+    return std::polar(1.0, u == known ? known_theta : c->theta_at_s_unchecked(u));
+  }
+};
+
 /// Error carried by the integrand values themselves, which no quadrature estimate sees: ρ =
 /// exp(log ρ) has relative error ≈ ε|log ρ| and e^{iθ} absolute error ≈ ε|θ|; both integrands
 /// have ∫|f| = |Δs|. Added to the quadrature's own estimate.
@@ -171,8 +193,10 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
 /// polyline): the same steps as integrating each piece separately, but the integrand value at a
 /// shared end is computed once (2 new evaluations per step), and the error estimate is the
 /// sweep's Richardson estimate plus integrand_rounding over the range covered so far.
+/// `frames_in_form`: the points' parameter is the integration variable, so f can take ρ or θ at
+/// a piece end from its frame (F::set_known).
 template <class F>
-void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, const F& f, std::vector<PositionResult>& out) {
+void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in_form, std::vector<PositionResult>& out) {
   Rk4Sweep<std::complex<double>> sweep(m);
   const double first = form == Form::s ? out.front().point.s : out.front().point.theta;
   const double last = form == Form::s ? out.back().point.s : out.back().point.theta;
@@ -183,6 +207,7 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, const F& f, std::ve
   for (auto& r : out) {
     const double next = form == Form::s ? r.point.s : r.point.theta;
     std::complex<double> piece{};
+    if (frames_in_form) f.set_known(r.point);
     if (sweep.status() == Status::ok) for_each_subpiece(c, form, prev, next, [&](double lo, double hi) {
       piece += sweep.advance(f, lo, hi);
       return sweep.status() == Status::ok;
@@ -201,7 +226,7 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, const F& f, std::ve
     r.evaluations = sweep.evaluations();
     r.form = form;
     r.status = sweep.status();
-    r.message = sweep.message();
+    if (r.status != Status::ok) r.message = sweep.message();
     r.error_estimate = sweep.status() != Status::ok ? std::numeric_limits<double>::infinity()
                                                     : sweep.error_estimate() + std::numeric_limits<double>::epsilon() *
                                                                                    (1 + log_rho_max + std::max(-theta_lo, theta_hi)) * length;
@@ -245,18 +270,25 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
                                      Form form = Form::automatic) {
   method.validate();
   if (n < 2 || n > 1'000'000) throw_input_error("polyline", "points", n, "[2, 1000000]");
-  std::vector<PositionResult> out(static_cast<size_t>(n));
+  // The domain is an interval: checking both ends covers every point clamped between them.
+  const char* name = p == Parameter::theta ? "theta" : "s";
+  c.check(p, t0, name);
+  c.check(p, t1, name);
+  const double t_min = std::min(t0, t1), t_max = std::max(t0, t1);
+  std::vector<PositionResult> out;
+  out.reserve(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     const double t = k + 1 == n ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);
-    out[static_cast<size_t>(k)].point = c.frame_at(p, t);
+    out.emplace_back().point = c.frame_inside(p, std::clamp(t, t_min, t_max));
   }
   const Form used = resolve_form(c, std::min({0.0, out.front().point.theta, out.back().point.theta}),
                                  std::max({0.0, out.front().point.theta, out.back().point.theta}), form);
   if constexpr (std::same_as<M, Rk4>) {
+    const bool frames_in_form = (used == Form::s) == (p == Parameter::s);
     if (used == Form::s) {
-      detail::polyline_rk4(c, method, used, detail::SFormIntegrand{&c}, out);
+      detail::polyline_rk4(c, method, used, detail::SFormIntegrandAtFrames{&c}, frames_in_form, out);
     } else {
-      detail::polyline_rk4(c, method, used, detail::ThetaFormIntegrand{&c}, out);
+      detail::polyline_rk4(c, method, used, detail::ThetaFormIntegrandAtFrames{&c}, frames_in_form, out);
     }
     return out;
   }

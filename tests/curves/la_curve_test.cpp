@@ -132,6 +132,48 @@ TEST(LaClosedForms, RoundTripsAndDerivativeIdentity) {
   }
 }
 
+// frame_at computes log ρ once and derives ρ, κ = 1/ρ and s (or θ) from it: it must agree with
+// the separate conversions (which check and compute each on its own) to a few ulp, and with the
+// reference table within the bound of MatchReferenceToAFewUlp; polyline's frames (domain checked
+// at the ends, frame_inside per point) are the same bits.
+TEST(LaClosedForms, FrameAgreesWithConversions) {
+  double worst = 0;
+  for (const auto& rc : reference_cases()) {
+    const LaCurve c(rc.alpha, rc.lambda);
+    const CurvePoint f = c.frame_at(Parameter::theta, rc.theta);
+    EXPECT_EQ(f.theta, rc.theta);
+    const double log_rho = std::abs(std::log(rc.rho));
+    auto ulp_error = [](double a, double b) { return std::abs(a - b) / (kEps * std::abs(b)); };
+    const double e_rho = ulp_error(f.rho, c.rho_at_theta(rc.theta)) / (1 + log_rho);
+    const double e_kappa = ulp_error(f.kappa, c.kappa_at_theta(rc.theta)) / (1 + log_rho);
+    const double e_s = ulp_error(f.s, c.s_at_theta(rc.theta)) / (1 + log_rho);
+    EXPECT_LE(e_rho, 4.0) << describe_case(rc);
+    EXPECT_LE(e_kappa, 4.0) << describe_case(rc);
+    EXPECT_LE(e_s, 4.0) << describe_case(rc);
+    worst = std::max({worst, e_rho, e_kappa, e_s});
+    // In s: θ, ρ and κ from one log ρ, against theta_at_s.
+    if (c.s_domain().contains(f.s)) {
+      const CurvePoint g = c.frame_at(Parameter::s, f.s);
+      EXPECT_EQ(g.s, f.s);
+      EXPECT_LE(ulp_error(g.theta, c.theta_at_s(f.s)), 4.0 * (1 + log_rho)) << describe_case(rc);
+      EXPECT_LE(ulp_error(g.rho * g.kappa, 1.0), 2.0) << describe_case(rc);
+    }
+  }
+  std::printf("frame_at vs separate conversions: worst %.2f eps*(1 + |log rho|)\n", worst);
+  for (Parameter p : {Parameter::theta, Parameter::s}) {
+    const LaCurve c(4.0 / 3.0, 10.0);
+    const auto line = polyline(c, p, -0.01, 0.8, 41, GaussKronrod{});
+    for (const auto& r : line) {
+      const double t = p == Parameter::theta ? r.point.theta : r.point.s;
+      const CurvePoint f = c.frame_at(p, t);
+      EXPECT_EQ(r.point.s, f.s);
+      EXPECT_EQ(r.point.theta, f.theta);
+      EXPECT_EQ(r.point.rho, f.rho);
+      EXPECT_EQ(r.point.kappa, f.kappa);
+    }
+  }
+}
+
 TEST(LaClosedForms, CircleWhenLambdaIsZero) {
   const LaCurve c(2.5, 0.0);
   for (double t : {-7.0, -1.0, 0.5, 3.0, 40.0}) {
@@ -230,7 +272,8 @@ TEST(LaPositions, Rk4PolylineSweepEqualsPerPiece) {
   for (const Case& k : {Case{2.0, 1.0, Parameter::theta, 0.0, 1.0, 1001, Form::theta},
                         Case{-1.0, 0.417, Parameter::theta, 0.0, 1.0, 1001, Form::automatic},
                         Case{4.0 / 3.0, 10.0, Parameter::s, 0.0, 1.2, 301, Form::theta},
-                        Case{2.0, 1.0, Parameter::theta, -0.5, 0.7, 121, Form::theta}}) {
+                        Case{2.0, 1.0, Parameter::theta, -0.5, 0.7, 121, Form::theta},
+                        Case{-1.0, 0.417, Parameter::s, 0.0, 1.0, 501, Form::s}}) {
     SCOPED_TRACE("alpha " + std::to_string(k.alpha) + " lambda " + std::to_string(k.lambda));
     const LaCurve c(k.alpha, k.lambda);
     const Rk4 rk4{.h = 1e-3};
@@ -314,8 +357,17 @@ TEST(LaInvalidInput, ParametersOutsideTheirRanges) {
   expect_input_error([&] { LaCurve(2.0, 1.0).theta_at_s(nan); }, "s", "(-0.5, inf)");
   expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 1, GaussKronrod{}); }, "points", "[2, 1000000]");
   expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, 0.0, 1.0, 2'000'000, GaussKronrod{}); }, "points", "[2, 1000000]");
+  // polyline checks the domain at both ends only (every point lies between them).
+  expect_input_error([] { polyline(LaCurve(0.5, 1.0), Parameter::theta, 0.0, 2.0, 11, Rk4{}); }, "theta", "(-inf, 2)");
+  expect_input_error([] { polyline(LaCurve(2.0, 1.0), Parameter::s, -0.5, 1.0, 11, Rk4{}); }, "s", "(-0.5, inf)");
+  // ... but still rejects a point inside the domain whose ρ overflows (R1), on either integrator path.
+  expect_input_error([] { polyline(LaCurve(1.0, 1.0), Parameter::theta, 0.0, 1000.0, 3, Rk4{}); }, "theta", "representable");
+  expect_input_error([] { polyline(LaCurve(1.0, 1.0), Parameter::theta, 1000.0, 0.0, 3, GaussKronrod{}); }, "theta", "representable");
   // Found by fuzz_la_curve: results outside the double range inside the open domain.
-  expect_input_error([] { LaCurve(1e300, 1e300).s_at_theta(1e-300); }, "theta", "representable");
+  // s = (ρ^α − 1)/(αΛ) = 1.00000000000000002506e-300 (mpmath, 50 digits) is representable; the
+  // old evaluation order overflowed an intermediate ((α − 1)Λ = inf) and threw, the product
+  // θ·g·h underflows to 0: either would be wrong. ρ^α = e^690.8 amplifies rounding ×690.
+  EXPECT_NEAR(LaCurve(1e300, 1e300).s_at_theta(1e-300) / 1.00000000000000002506e-300, 1.0, 4e-13);
   expect_input_error([] { LaCurve(0, 7.95).theta_at_s(std::numeric_limits<double>::max()); }, "s", "representable");
   expect_input_error([] { LaCurve(1, std::numeric_limits<double>::max()).rho_at_theta(2); }, "theta", "representable");
   // Turning beyond what the quadrature pieces can resolve (was: status ok, |C| wrong by 1e150).
