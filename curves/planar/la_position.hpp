@@ -67,26 +67,52 @@ struct SFormIntegrand {
   std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
 };
 
-/// The integrands of an RK4 polyline, whose sweep evaluates each output point (a piece end)
-/// once: there ρ (θ-form) or θ (s-form) is taken from that point's frame instead of being
-/// recomputed (the frame computes it with the same operations, so the value is the same bit for
-/// bit), leaving one sincos. `known` is the point's parameter; NaN (never equal) when the frame's
-/// parameter is not the integration variable.
-struct ThetaFormIntegrandAtFrames {
+/// e^{iψ} for a run of nearby angles, as an RK4 sweep asks for them: one sincos at a base angle,
+/// and for |ψ − base| ≤ 1/64 the base turned by e^{iδ}, δ = ψ − base, from its Taylor polynomial
+/// (truncation < 1e-19 there), added to the base as a small correction. Every value is one turn
+/// from a sincos, so nothing accumulates: ≤ 0.51 ε absolute against a 113-bit reference (2·10^6
+/// random angles; sincos 0.25 ε). On 002's segment (h = 0.001, θ ∈ [0, 1]) about 64 sincos
+/// instead of 2001.
+class NearbyCis {
+ public:
+  std::complex<double> operator()(double psi) {
+    const double d = psi - base_;
+    if (std::abs(d) <= 1.0 / 64) {  // false while base_ is NaN
+      const double d2 = d * d;
+      const double cos_d_m1 = d2 * (-1.0 / 2 + d2 * (1.0 / 24 + d2 * (-1.0 / 720)));   // cos δ − 1
+      const double sin_d = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040)));
+      return {cos_ + (cos_ * cos_d_m1 - sin_ * sin_d), sin_ + (sin_ * cos_d_m1 + cos_ * sin_d)};  // base + small
+    }
+    base_ = psi;
+    cos_ = std::cos(psi);  // with sin: one sincos
+    sin_ = std::sin(psi);
+    return {cos_, sin_};
+  }
+
+ private:
+  double base_ = std::numeric_limits<double>::quiet_NaN(), cos_ = 1, sin_ = 0;
+};
+
+/// The integrands as an Rk4Sweep evaluates them (in order, at nearby points): e^{iθ} by
+/// NearbyCis, and at a polyline's output point (a piece end, evaluated once) ρ (θ-form) or θ
+/// (s-form) taken from that point's frame instead of recomputed (the frame computes it with the
+/// same operations, so the value is the same bit for bit). `known` is the point's parameter; NaN
+/// (never equal) when the frame's parameter is not the integration variable.
+struct ThetaFormSweepIntegrand {
   const LaCurve* c;
   double known = std::numeric_limits<double>::quiet_NaN(), known_rho = 1;
+  NearbyCis cis{};
   void set_known(const CurvePoint& q) { known = q.theta, known_rho = q.rho; }
-  std::complex<double> operator()(double psi) const {
-    return std::polar(psi == known ? known_rho : std::exp(c->log_rho_at_theta_unchecked(psi)), psi);
+  std::complex<double> operator()(double psi) {
+    return (psi == known ? known_rho : std::exp(c->log_rho_at_theta_unchecked(psi))) * cis(psi);
   }
 };
-struct SFormIntegrandAtFrames {
+struct SFormSweepIntegrand {
   const LaCurve* c;
   double known = std::numeric_limits<double>::quiet_NaN(), known_theta = 0;
+  NearbyCis cis{};
   void set_known(const CurvePoint& q) { known = q.s, known_theta = q.theta; }
-  std::complex<double> operator()(double u) const {
-    return std::polar(1.0, u == known ? known_theta : c->theta_at_s_unchecked(u));
-  }
+  std::complex<double> operator()(double u) { return cis(u == known ? known_theta : c->theta_at_s_unchecked(u)); }
 };
 
 /// Error carried by the integrand values themselves, which no quadrature estimate sees: ρ =
@@ -146,8 +172,8 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
   } else if constexpr (std::same_as<M, Rk4>) {
     Rk4Sweep<std::complex<double>> sweep(m);
     sweep.reserve(b - a);
-    const ThetaFormIntegrand ft{&c};
-    const SFormIntegrand fs{&c};
+    ThetaFormSweepIntegrand ft{&c};
+    SFormSweepIntegrand fs{&c};
     if (sweep.status() == Status::ok) for_each_subpiece(c, form, a, b, [&](double lo, double hi) {
       r.value += form == Form::s ? sweep.advance(fs, lo, hi) : sweep.advance(ft, lo, hi);
       return sweep.status() == Status::ok;
@@ -286,9 +312,9 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   if constexpr (std::same_as<M, Rk4>) {
     const bool frames_in_form = (used == Form::s) == (p == Parameter::s);
     if (used == Form::s) {
-      detail::polyline_rk4(c, method, used, detail::SFormIntegrandAtFrames{&c}, frames_in_form, out);
+      detail::polyline_rk4(c, method, used, detail::SFormSweepIntegrand{&c}, frames_in_form, out);
     } else {
-      detail::polyline_rk4(c, method, used, detail::ThetaFormIntegrandAtFrames{&c}, frames_in_form, out);
+      detail::polyline_rk4(c, method, used, detail::ThetaFormSweepIntegrand{&c}, frames_in_form, out);
     }
     return out;
   }
