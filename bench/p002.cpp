@@ -8,7 +8,7 @@
 //                            step, as 002's Butcher tableau), the library polyline of 1001 points
 //                            (one RK4 sweep, 2 new evaluations per step), and the 1001 frames alone
 //                            (as polyline computes them: both ends' domain checked once, then
-//                            LaCurve::frame_inside per point; the polyline's cost that is not
+//                            LaCurve::frames_inside; the polyline's cost that is not
 //                            quadrature).
 // Targets (issue 4): best endpoint ≤ 1e-13 relative in ≤ 2 µs median on every row; RK4 h = 0.001
 // over a segment ≤ 150 µs median. Run with --benchmark_repetitions=5 for medians; the machine is
@@ -101,7 +101,7 @@ void segment_polyline(benchmark::State& state, lac::p002::ReferenceEnd ref) {
 }
 
 /// The 1001 frames (s, θ, ρ, κ) alone, as polyline computes them before integrating (domain
-/// checked at both ends, then frame_inside per point): the part of the polyline time that is
+/// checked at both ends, then LaCurve::frames_inside): the part of the polyline time that is
 /// not quadrature.
 void segment_frames(benchmark::State& state, lac::p002::ReferenceEnd ref) {
   const lac::LaCurve curve(ref.alpha, ref.lambda);
@@ -110,8 +110,8 @@ void segment_frames(benchmark::State& state, lac::p002::ReferenceEnd ref) {
     curve.check(lac::Parameter::theta, 0.0, "theta");
     curve.check(lac::Parameter::theta, ref.theta_end, "theta");
     for (int k = 0; k < 1001; ++k)
-      frames[static_cast<size_t>(k)] =
-          curve.frame_inside(lac::Parameter::theta, k == 1000 ? ref.theta_end : ref.theta_end * k / 1000.0);
+      frames[static_cast<size_t>(k)] = lac::CurvePoint{.theta = k == 1000 ? ref.theta_end : ref.theta_end * k / 1000.0};
+    curve.frames_inside(lac::Parameter::theta, frames);
     benchmark::DoNotOptimize(frames.data());
   }
 }

@@ -93,6 +93,11 @@ CurvePoint LaCurve::frame_at(Parameter p, double t) const {
   return frame_inside(p, t);
 }
 
+void LaCurve::frames_inside(Parameter p, std::span<CurvePoint> points) const {
+  for (CurvePoint& q : points) q.rho = log_rho_and_g(p, p == Parameter::theta ? q.theta : q.s, q.kappa);  // κ holds g
+  for (CurvePoint& q : points) finish_frame(p, q.kappa, q.rho, q);
+}
+
 void LaCurve::throw_unrepresentable(Parameter p, double t, double log_rho) const {
   throw_input_error("LaCurve(alpha=" + format_number(alpha_) + ", lambda=" + format_number(lambda_) + ")",
                     p == Parameter::theta ? "theta" : "s", t,

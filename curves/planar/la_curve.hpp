@@ -11,6 +11,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <span>
 
 namespace lac {
 
@@ -91,18 +92,39 @@ class LaCurve {
   /// other parameter derive from it.
   CurvePoint frame_inside(Parameter p, double t) const {
     CurvePoint c;
-    const double log_rho = log_rho_and_other(p, t, p == Parameter::theta ? c.s : c.theta);
     (p == Parameter::theta ? c.theta : c.s) = t;
+    double g = 0;
+    const double log_rho = log_rho_and_g(p, t, g);
+    finish_frame(p, g, log_rho, c);
+    return c;
+  }
+
+  /// frame_inside for every point of `points`, whose θ (p = theta) or s (p = s) holds the
+  /// parameter on entry: the same values bit for bit, computed in two passes (all log1p, then
+  /// all expm1 and exp) so that the independent calls of different points overlap in the CPU
+  /// (1001 frames: ~30 % less time than one frame after the other).
+  void frames_inside(Parameter p, std::span<CurvePoint> points) const;
+
+ private:
+  // frame_inside in two stages: log ρ and g (one log1p), then the other parameter, ρ and κ
+  // (one expm1, one exp) with the representability check.
+  double log_rho_and_g(Parameter p, double t, double& g) const {
+    const double x = lambda_ * t;
+    g = log1p_ratio((p == Parameter::theta ? alpha_ - 1.0 : alpha_) * x);
+    return x * g;
+  }
+  void finish_frame(Parameter p, double g, double log_rho, CurvePoint& c) const {
+    const bool at_theta = p == Parameter::theta;
+    const double t = at_theta ? c.theta : c.s;
+    (at_theta ? c.s : c.theta) = t * (g * expm1_ratio((at_theta ? alpha_ : alpha_ - 1.0) * log_rho));
     c.rho = std::exp(log_rho);
     // 1/ρ carries ρ's rounding plus one; below DBL_MIN ρ is subnormal (few bits), so take e^(−log ρ).
     c.kappa = c.rho >= std::numeric_limits<double>::min() ? 1.0 / c.rho : std::exp(-log_rho);
     if (!(std::isfinite(c.s) && std::isfinite(c.theta) && c.rho > 0 && c.rho <= std::numeric_limits<double>::max() &&
           c.kappa > 0 && c.kappa <= std::numeric_limits<double>::max()))
       throw_unrepresentable(p, t, log_rho);
-    return c;
   }
 
- private:
   /// log ρ at θ (or s), and the other parameter s (or θ) into `other`, sharing g:
   ///   θ given: x = Λθ, g = g((α−1)x), log ρ = x g, s = θ g h(α log ρ)
   ///   s given: x = Λs, g = g(αx),     log ρ = x g, θ = s g h((α−1) log ρ)
@@ -110,11 +132,9 @@ class LaCurve {
   /// first: at extreme α, Λ the two factors compensate (e.g. 7e-298 and 1.4e297 for α = Λ = 1e300,
   /// θ = 1e-300, s = 1e-300), where t·g would underflow to 0.
   double log_rho_and_other(Parameter p, double t, double& other) const {
-    const double x = lambda_ * t;
-    const bool at_theta = p == Parameter::theta;
-    const double g = log1p_ratio((at_theta ? alpha_ - 1.0 : alpha_) * x);
-    const double log_rho = x * g;
-    other = t * (g * expm1_ratio((at_theta ? alpha_ : alpha_ - 1.0) * log_rho));
+    double g = 0;
+    const double log_rho = log_rho_and_g(p, t, g);
+    other = t * (g * expm1_ratio((p == Parameter::theta ? alpha_ : alpha_ - 1.0) * log_rho));
     return log_rho;
   }
   [[noreturn]] void throw_unrepresentable(Parameter p, double t, double log_rho) const;

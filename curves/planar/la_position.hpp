@@ -301,12 +301,15 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   c.check(p, t0, name);
   c.check(p, t1, name);
   const double t_min = std::min(t0, t1), t_max = std::max(t0, t1);
-  std::vector<PositionResult> out;
-  out.reserve(static_cast<size_t>(n));
+  std::vector<CurvePoint> frames(static_cast<size_t>(n));
   for (int k = 0; k < n; ++k) {
     const double t = k + 1 == n ? t1 : t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(n - 1);
-    out.emplace_back().point = c.frame_inside(p, std::clamp(t, t_min, t_max));
+    (p == Parameter::theta ? frames[static_cast<size_t>(k)].theta : frames[static_cast<size_t>(k)].s) = std::clamp(t, t_min, t_max);
   }
+  c.frames_inside(p, frames);
+  std::vector<PositionResult> out;
+  out.reserve(static_cast<size_t>(n));
+  for (const CurvePoint& q : frames) out.emplace_back().point = q;
   const Form used = resolve_form(c, std::min({0.0, out.front().point.theta, out.back().point.theta}),
                                  std::max({0.0, out.front().point.theta, out.back().point.theta}), form);
   if constexpr (std::same_as<M, Rk4>) {
