@@ -4,41 +4,78 @@
 # writes results/robustness.{md,csv}: per target executions, crashes, hangs and NaN results
 # (distinct findings) with notes. See docs/robustness.md.
 #
-# Usage: scripts/fuzz.sh [--short] [--runs N] [--max-time S] [--targets "cli la_curve ..."]
-#                        [--no-build] [--report-only] [--out DIR]
-#   default      10^6 executions per target (-runs=1000000), at most 3 h each
-#   --short      2·10^4 executions per target, at most 10 min each (tests / CI)
+# Usage: scripts/fuzz.sh [--short] [--runs N] [--max-time S] [--seed N] [--targets "cli la_curve ..."]
+#                        [--no-build] [--report-only] [--out DIR] [--findings DIR]
+#   default      10^6 executions per target (-runs=1000000), at most 3 h each, libFuzzer fork mode
+#                (a crash does not end the run), random seed, corpus kept in build-fuzz/fuzz-corpus/
+#   --short      the test / CI run: deterministic and bounded. Per target about 60 s of executions at
+#                the measured rate (short_runs below), at most 120 s each (so at most 14 min for the 7
+#                targets plus replays), in-process (no fork), -seed=1, a fresh corpus from the
+#                committed seeds (fuzz/corpus/<target>/, and the saved finding inputs
+#                fuzz/findings/fuzz_<target>/ as a regression corpus)
 #   --max-time   wall-clock cap per target in seconds (the table reports executions reached)
+#   --seed       libFuzzer -seed (default: 1 with --short, random otherwise)
+#   --findings   where this run saves finding inputs (default fuzz/findings; CI: a temp dir)
 #   --report-only  rewrite the results from the last run's build-fuzz/fuzz-summary.tsv (same options)
 # Findings: libFuzzer's crash/timeout/oom inputs and the harness's property violations (one input
-# per distinct message, LAC_FUZZ_CONTINUE mode) are saved under fuzz/findings/fuzz_<target>/.
+# per distinct message, LAC_FUZZ_CONTINUE mode) are saved under <findings>/fuzz_<target>/. Only
+# inputs saved during this run are counted: the saved inputs of earlier runs are replayed as seeds,
+# and one that still fails is saved (rewritten) again, so it counts; one that no longer fails does not.
 # Exit status 0 when no target has a finding, 3 otherwise (1 on build errors).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# --short: executions per target, ~60 % of the 120 s cap at the rates measured on the shared,
+# loaded 2-core machine (docs/robustness.md; executions/s in-process under the sanitizers, over
+# the whole run: the first executions are cheaper), so that the run ends by its count
+# (deterministic), not by the cap.
+short_runs() {
+  case "$1" in
+    cli) echo 25000 ;;              # ~360/s
+    hermite) echo 6000 ;;           # ~85/s
+    la_curve) echo 4000 ;;          # ~50/s while R6 is open (single inputs of seconds)
+    planar_segments) echo 25000 ;;  # ~370/s
+    quadratic) echo 600 ;;          # ~8-15/s while R6, R9 are open (single inputs of up to 17 s)
+    space) echo 1000 ;;             # ~20/s (solver calls of ~0.3 s)
+    special) echo 500000 ;;         # ~30000/s
+    *) echo 3000 ;;
+  esac
+}
+SHORT_MAX_TIME=120
 RUNS=1000000
 MAX_TIME=10800
+SEED=""
 TARGETS=""
 BUILD=1
 OUT=results
+FINDINGS=fuzz/findings
 MODE=full
 REPORT_ONLY=0
+RUNS_GIVEN=0
+MAX_TIME_GIVEN=0
 while (($#)); do
   case "$1" in
-    --short) RUNS=20000; MAX_TIME=600; MODE=short ;;
-    --runs) RUNS=$2; shift ;;
-    --max-time) MAX_TIME=$2; shift ;;
+    --short) MODE=short ;;
+    --runs) RUNS=$2; RUNS_GIVEN=1; shift ;;
+    --max-time) MAX_TIME=$2; MAX_TIME_GIVEN=1; shift ;;
+    --seed) SEED=$2; shift ;;
     --targets) TARGETS=$2; shift ;;
     --no-build) BUILD=0 ;;
     --report-only) REPORT_ONLY=1; BUILD=0 ;;
     --out) OUT=$2; shift ;;
+    --findings) FINDINGS=$2; shift ;;
     *) echo "fuzz.sh: unknown argument $1 (see the header of scripts/fuzz.sh)" >&2; exit 2 ;;
   esac
   shift
 done
+[ "$MODE" = short ] && [ -z "$SEED" ] && SEED=1
 COMMAND="scripts/fuzz.sh"
 [ "$MODE" = short ] && COMMAND+=" --short"
-[ "$RUNS" != 1000000 ] && [ "$RUNS" != 20000 ] && COMMAND+=" --runs $RUNS"
-[ "$MAX_TIME" != 10800 ] && [ "$MAX_TIME" != 600 ] && COMMAND+=" --max-time $MAX_TIME"
+# --runs / --max-time override the mode's settings in any order
+[ "$MODE" = short ] && ((RUNS_GIVEN == 0)) && RUNS=short
+[ "$MODE" = short ] && ((MAX_TIME_GIVEN == 0)) && MAX_TIME=$SHORT_MAX_TIME
+((RUNS_GIVEN)) && COMMAND+=" --runs $RUNS"
+((MAX_TIME_GIVEN)) && COMMAND+=" --max-time $MAX_TIME"
+[ -n "$SEED" ] && [ "$MODE" != short -o "$SEED" != 1 ] && COMMAND+=" --seed $SEED"
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -69,20 +106,41 @@ summary="$BUILD_DIR/fuzz-summary.tsv"
 ((REPORT_ONLY)) && TARGETS=""
 ((REPORT_ONLY)) || : >"$summary"
 status=0
+replay_limit=120
+[ "$MODE" = short ] && replay_limit=30
 for t in $TARGETS; do
   bin="$BUILD_DIR/fuzz/fuzz_$t"
   [ -x "$bin" ] || { echo "fuzz.sh: no target $bin" >&2; exit 1; }
-  findings="fuzz/findings/fuzz_$t"
-  corpus="$BUILD_DIR/fuzz-corpus/$t"
+  findings="$FINDINGS/fuzz_$t"
+  if [ "$MODE" = short ]; then  # deterministic: start from the committed seeds only
+    corpus="$BUILD_DIR/fuzz-short-corpus/$t"
+    rm -rf "$corpus"
+  else
+    corpus="$BUILD_DIR/fuzz-corpus/$t"
+  fi
   mkdir -p "$findings" "$corpus"
+  runs=$RUNS
+  [ "$runs" = short ] && runs=$(short_runs "$t")
   marker="$BUILD_DIR/fuzz-$t.start"
   touch "$marker"
   sleep 1
-  args=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 "-runs=$RUNS" "-max_total_time=$MAX_TIME"
-        -timeout=20 -rss_limit_mb=2560 -max_len=512 "-artifact_prefix=$findings/" -print_final_stats=1)
+  args=("-runs=$runs" "-max_total_time=$MAX_TIME" -timeout=20 -rss_limit_mb=2560 -max_len=512
+        "-artifact_prefix=$findings/" -print_final_stats=1)
+  # Fork mode keeps going after a crash; the short run stays in one process (deterministic for a
+  # given seed; a crash ends that target's run, which is a finding anyway).
+  # -len_control=0: inputs up to -max_len from the start; libFuzzer's default length growth keeps
+  # a few-thousand-execution run at ~17 bytes, too short to reach the solvers (about 3 doubles).
+  if [ "$MODE" = short ]; then
+    args+=(-len_control=0)
+  else
+    args+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+  fi
+  [ -n "$SEED" ] && args+=("-seed=$SEED")
   [ "$t" = cli ] && [ -s "$dict" ] && args+=("-dict=$dict")
   seeds=()
   [ -d "fuzz/corpus/$t" ] && seeds+=("fuzz/corpus/$t")
+  # Saved inputs of earlier findings (fixed or open) are a regression corpus.
+  [ -d "fuzz/findings/fuzz_$t" ] && [ "fuzz/findings/fuzz_$t" != "$corpus" ] && seeds+=("fuzz/findings/fuzz_$t")
   runlog="$BUILD_DIR/fuzz-$t.log"
   start=$(date +%s)
   LAC_FUZZ_FINDINGS_DIR="$findings" "$bin" "${args[@]}" "$corpus" "${seeds[@]}" >"$runlog" 2>&1 || true
@@ -102,7 +160,7 @@ for t in $TARGETS; do
       crash-*|oom-*|leak-*|[A-Z]*-*) ;;
       *) continue ;;
     esac
-    line=$(LAC_FUZZ_CONTINUE=0 timeout 120 "$bin" "$path" 2>&1 |
+    line=$(LAC_FUZZ_CONTINUE=0 timeout "$replay_limit" "$bin" "$path" 2>&1 |
            grep -m1 -E 'LAC_FUZZ_[A-Z_]+:|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error:' || true)
     case "$line" in
       LAC_FUZZ_*) echo "${line#*LAC_FUZZ_}" | sed 's/^/LAC_FUZZ_/' >>"$sigs" ;;
@@ -110,7 +168,7 @@ for t in $TARGETS; do
          echo "SANITIZER_CRASH: ${line:-no longer reproduces} [$f]" >>"$sigs" ;;
     esac
   done
-  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" "$RUNS" "$MAX_TIME" <<'PY'
+  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" "$runs" "$MAX_TIME" <<'PY'
 import re, sys
 target, execs, seconds, sigs_path, summary, runs, max_time = sys.argv[1:]
 def strip(s):  # one signature per kind of failure, not per input
@@ -134,7 +192,7 @@ with open(summary, "a") as f:
 PY
   line=$(tail -1 "$summary")
   IFS=$'\t' read -r _ _ _ _ _ nc nh nn _ <<<"$line"
-  echo "fuzz_$t: $execs executions in ${seconds}s, crashes $nc, hangs $nh, NaN $nn" >&2
+  echo "fuzz_$t: $execs executions in ${seconds}s ($((execs / (seconds > 0 ? seconds : 1))) per s), crashes $nc, hangs $nh, NaN $nn" >&2
   ((nc + nh + nn == 0)) || status=3
 done
 
@@ -166,4 +224,8 @@ with open(os.path.join(out, "robustness.md"), "w") as f:
         f.write("| " + " | ".join(c.replace("|", "/") for c in r) + " |\n")
 PY
 echo "fuzz.sh: wrote $OUT/robustness.md and $OUT/robustness.csv" >&2
+if ((status)); then  # the notes name each finding's call; its input is in the findings folder
+  awk -F'\t' '$6 + $7 + $8 > 0 { print "fuzz.sh: fuzz_" $1 ": " $9 }' "$summary" >&2
+  echo "fuzz.sh: finding inputs saved in $FINDINGS/fuzz_<target>/ (replay: $BUILD_DIR/fuzz/fuzz_<target> <file>)" >&2
+fi
 exit "$status"
