@@ -45,7 +45,7 @@ std::complex<double> small_rotation(double d) {
   return {cos_d, sin_d};
 }
 
-Node node_at(const QuadraticLaCurve& c, const Node& a, double s, Status& status) {
+Node node_at(const QuadraticLaCurve& c, const Node& a, double s, Status& status, const char* end_name) {
   // Third-order Taylor predictor of u(s) (u'' = −E' u'², u''' = (2E'² − 2γ) u'³), so that one
   // Halley step usually lands within rounding and is accepted without a second F evaluation.
   const double h = s - a.s, d1 = a.du_ds;
@@ -54,8 +54,15 @@ Node node_at(const QuadraticLaCurve& c, const Node& a, double s, Status& status)
   const KappaSolution k = c.solve_kappa_near(s, a.u + h * (d1 + h * (0.5 * d2 + h * d3 / 6.0)));
   if (k.status != Status::ok && status == Status::ok) status = k.status;
   const double theta = a.theta + c.theta_difference(a.u, k.log_kappa);
+  const double du_ds = c.dlog_kappa_ds(k.log_kappa);
+  // Between s_from and s_to κ (or ρ, θ, dκ/ds) can leave the double range, e.g. κ = e^(−4660) = 0 for
+  // small γ > 0 far along the curve: an input error naming the end, never a NaN in the points.
+  if (!(k.kappa > 0) || !std::isfinite(k.kappa) || !std::isfinite(1.0 / k.kappa) || !std::isfinite(theta) ||
+      !std::isfinite(du_ds * k.kappa))
+    throw_input_error("quadratic hermite_polyline", end_name, s,
+                      "(a range over which kappa, rho and theta are representable doubles)");
   // e^(iθ) by rotating the previous tangent (one rounding per node, no sincos).
-  return {s, k.log_kappa, theta, k.kappa, c.dlog_kappa_ds(k.log_kappa), a.tangent * small_rotation(theta - a.theta)};
+  return {s, k.log_kappa, theta, k.kappa, du_ds, a.tangent * small_rotation(theta - a.theta)};
 }
 
 // ∫ e^(iθ) over [a.s, b.s] with θ the quintic Hermite interpolant (θ, κ = θ', κ' = κ u' at both
@@ -89,16 +96,21 @@ std::complex<double> hermite_piece(const Node& a, const Node& b, double& bound) 
 
 // Marches from node a to s_next, splitting where the tangent turns > 0.25 rad or log κ changes
 // by > 0.05 over a piece (at most 1e4 pieces).
-Node advance(const QuadraticLaCurve& c, const Node& a, double s_next, Path& path) {
+Node advance(const QuadraticLaCurve& c, const Node& a, double s_next, Path& path, const char* end_name) {
   const double h = s_next - a.s;
   const double need = std::max(std::abs(h * a.kappa) / 0.25, std::abs(h * a.du_ds) / 0.05);
   const int pieces = need > 1 ? static_cast<int>(std::min(1e4, std::ceil(need))) : 1;
   Node cur = a;
   for (int p = 1; p <= pieces; ++p) {
     const double s = p == pieces ? s_next : a.s + h * p / pieces;
-    const Node next = node_at(c, cur, s, path.status);
+    const Node next = node_at(c, cur, s, path.status, end_name);
     ++path.evaluations;
     path.position += hermite_piece(cur, next, path.bound);
+    // Past the 1e4-piece cap a piece can turn beyond the double range (e.g. s ~ 1e108): no NaN points.
+    if (!std::isfinite(path.position.real()) || !std::isfinite(path.position.imag()) || !std::isfinite(path.bound))
+      throw_input_error("quadratic hermite_polyline", end_name, s,
+                        "(a range whose positions are representable: here one step of the polyline turns the "
+                        "tangent by " + format_number(std::abs(next.theta - cur.theta)) + " rad)");
     cur = next;
   }
   return cur;
@@ -136,18 +148,21 @@ std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s
   }
   std::vector<PositionResult> out(count);
   Path start;
-  const Node at_first = advance(c, origin(c), grid(first), start);
+  // InputErrors name the end of the range the failing node lies toward.
+  const char* kFrom = "s_from";
+  const char* kTo = "s_to";
+  const Node at_first = advance(c, origin(c), grid(first), start, first == 0 ? kFrom : kTo);
   store(out[first], at_first, start);
   Path up = start;
   Node cur = at_first;
   for (size_t k = first + 1; k < count; ++k) {
-    cur = advance(c, cur, grid(k), up);
+    cur = advance(c, cur, grid(k), up, kTo);
     store(out[k], cur, up);
   }
   Path down = start;
   cur = at_first;
   for (size_t k = first; k-- > 0;) {
-    cur = advance(c, cur, grid(k), down);
+    cur = advance(c, cur, grid(k), down, kFrom);
     store(out[k], cur, down);
   }
   return out;

@@ -76,11 +76,14 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
 }
 
 /// Fast polyline (n ≥ 2 points uniform in s, s0..s1 inside the base domain, no inflection
-/// continuation): marches from s = 0, each point's log κ by Halley from the previous one
-/// (no erfi⁻¹ start), θ by its closed form, and each segment's ∫e^(iθ) by 4-point
-/// Gauss–Legendre over the quintic Hermite interpolant of θ (θ, κ, dκ/ds at both ends, all
-/// exact). error_estimate: Σ h·max|θ_quintic − θ_cubic| over the nodes, a pessimistic bound.
-/// Segments turning more than 0.25 rad or changing log κ by more than 0.05 are split.
+/// continuation): marches outward from the grid point nearest s = 0. Per node log κ by one Halley
+/// step on the closed form from a third-order Taylor predictor (solve_kappa_near), θ by the local
+/// series of theta_difference from the previous node, the tangent by rotating the previous one;
+/// each segment's ∫e^(iθ) by 4-point Gauss–Legendre over the quintic Hermite interpolant of θ
+/// (θ, κ, dκ/ds at both ends). error_estimate: Σ h·max|θ_quintic − θ_cubic| along the march from
+/// s = 0, a pessimistic bound. Segments turning more than 0.25 rad or changing log κ by more than
+/// 0.05 are split (at most 1e4 pieces per grid step). InputError naming s_from / s_to where κ, ρ or
+/// θ leaves the double range on the way (docs/quadratic.md).
 std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n);
 
 /// Run-time choice of the quadrature method (make_quadrature by name).

@@ -78,5 +78,19 @@ TEST(QuadraticRobustness, R9dNanLogKappaIsAnInputError) {
                      "s_at_log_kappa(inf)");
 }
 
+// hermite_polyline over a range where κ underflows (κ = e^(−4660) for s > 0 here) or where one
+// step turns the tangent beyond the double range: InputError naming the end, never NaN points
+// (found by a random sweep of α, γ, Λ while optimising the march).
+TEST(QuadraticRobustness, HermitePolylineRejectsUnrepresentableRanges) {
+  const QuadraticLaCurve under(-1.32111, 0.000283721, 0.111627);
+  expect_input_error([&] { hermite_polyline(under, -980, 980, 50); }, "s_to", "hermite_polyline(-980, 980)");
+  const auto fine = hermite_polyline(under, -980, 0, 50);  // the κ ≥ 1 side is representable
+  for (const auto& p : fine) ASSERT_TRUE(std::isfinite(p.point.position.real()) && std::isfinite(p.point.theta));
+  const QuadraticLaCurve turning(-0.385347, -0.00015864, 2.66841e-05);
+  ASSERT_TRUE(turning.s_domain().contains(-2.2e108));
+  expect_input_error([&] { hermite_polyline(turning, -2.2e108, -2.2e106, 50); }, "s_to",
+                     "hermite_polyline(-2.2e108, -2.2e106)");
+}
+
 }  // namespace
 }  // namespace lac
