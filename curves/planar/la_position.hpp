@@ -98,21 +98,27 @@ class NearbyCis {
 /// (s-form) taken from that point's frame instead of recomputed (the frame computes it with the
 /// same operations, so the value is the same bit for bit). `known` is the point's parameter; NaN
 /// (never equal) when the frame's parameter is not the integration variable.
+/// `mid`, `mid_value`: the same for a piece's midpoint, whose value polyline_rk4 computes ahead
+/// in a pass of its own (value()).
 struct ThetaFormSweepIntegrand {
   const LaCurve* c;
   double known = std::numeric_limits<double>::quiet_NaN(), known_rho = 1;
+  double mid = std::numeric_limits<double>::quiet_NaN(), mid_value = 1;
   NearbyCis cis{};
   void set_known(const CurvePoint& q) { known = q.theta, known_rho = q.rho; }
+  double value(double psi) const { return std::exp(c->log_rho_at_theta_unchecked(psi)); }  // ρ
   std::complex<double> operator()(double psi) {
-    return (psi == known ? known_rho : std::exp(c->log_rho_at_theta_unchecked(psi))) * cis(psi);
+    return (psi == known ? known_rho : psi == mid ? mid_value : value(psi)) * cis(psi);
   }
 };
 struct SFormSweepIntegrand {
   const LaCurve* c;
   double known = std::numeric_limits<double>::quiet_NaN(), known_theta = 0;
+  double mid = std::numeric_limits<double>::quiet_NaN(), mid_value = 0;
   NearbyCis cis{};
   void set_known(const CurvePoint& q) { known = q.s, known_theta = q.theta; }
-  std::complex<double> operator()(double u) { return cis(u == known ? known_theta : c->theta_at_s_unchecked(u)); }
+  double value(double u) const { return c->theta_at_s_unchecked(u); }  // θ
+  std::complex<double> operator()(double u) { return cis(u == known ? known_theta : u == mid ? mid_value : value(u)); }
 };
 
 /// Error carried by the integrand values themselves, which no quadrature estimate sees: ρ =
@@ -227,13 +233,30 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in
   const double first = form == Form::s ? out.front().point.s : out.front().point.theta;
   const double last = form == Form::s ? out.back().point.s : out.back().point.theta;
   sweep.reserve(std::abs(first) + std::abs(last - first));  // 0 → first → last
-  double prev = 0.0, prev_s = 0.0, length = 0.0, theta_lo = 0.0, theta_hi = 0.0;
+  // The integrand at the midpoint of every one-step piece (the sweep's a + step/2 with step =
+  // b − a), computed in a pass of its own before the sweep: these calls are independent and
+  // overlap, while inside the sweep each waits for the previous step. Same values bit for bit.
+  std::vector<double> mids(out.size()), mid_values(out.size());
+  double prev = 0.0;
+  for (size_t k = 0; k < out.size(); ++k) {
+    const double next = form == Form::s ? out[k].point.s : out[k].point.theta;
+    const double span = next - prev;
+    const bool one_step = span != 0 && std::ceil(std::abs(span) / m.h * (1 - 1e-9)) <= 1.0;
+    mids[k] = one_step ? prev + 0.5 * span : std::numeric_limits<double>::quiet_NaN();
+    if (one_step) mid_values[k] = f.value(mids[k]);
+    prev = next;
+  }
+  prev = 0.0;
+  double prev_s = 0.0, length = 0.0, theta_lo = 0.0, theta_hi = 0.0;
   double log_rho_max = 0.0;  // max |log ρ| over [theta_lo, theta_hi]: log ρ is monotone in θ
   std::complex<double> pos{};
-  for (auto& r : out) {
+  for (size_t k = 0; k < out.size(); ++k) {
+    PositionResult& r = out[k];
     const double next = form == Form::s ? r.point.s : r.point.theta;
     std::complex<double> piece{};
     if (frames_in_form) f.set_known(r.point);
+    f.mid = mids[k];
+    f.mid_value = mid_values[k];
     if (sweep.status() == Status::ok) for_each_subpiece(c, form, prev, next, [&](double lo, double hi) {
       piece += sweep.advance(f, lo, hi);
       return sweep.status() == Status::ok;
