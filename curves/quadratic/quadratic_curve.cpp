@@ -41,12 +41,16 @@ QuadraticLaCurve::QuadraticLaCurve(double alpha, double gamma, double lambda, Qu
 
 double QuadraticLaCurve::s_at_log_kappa(double u) const {
   require_finite(kFunction, "log_kappa", u);
-  return -s_integral_(u) / lambda_;
+  const double s = -s_integral_(u) / lambda_;
+  if (std::isnan(s)) throw_input_error(kFunction, "log_kappa", u, "(where s is a representable double)");
+  return s;
 }
 
 double QuadraticLaCurve::theta_at_log_kappa(double u) const {
   require_finite(kFunction, "log_kappa", u);
-  return -theta_integral_(u) / lambda_;
+  const double theta = -theta_integral_(u) / lambda_;
+  if (std::isnan(theta)) throw_input_error(kFunction, "log_kappa", u, "(where theta is a representable double)");
+  return theta;
 }
 
 bool QuadraticLaCurve::has_inflection() const { return std::isfinite(s_hi_); }

@@ -7,6 +7,8 @@
 // than ok at a returned point (003's hybrid inverse outside its range) is merged into that
 // point's status; inside the quadrature the integrand cannot report it.
 #include <complex>
+#include <concepts>
+#include <string>
 #include <vector>
 
 #include "curves/planar/la_position.hpp"
@@ -40,8 +42,18 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method)
   return r;
 }
 
+/// Evaluation budget of one polyline call (its pieces are separate quadrature calls): the
+/// method's own per-call budget, so that n pieces cannot multiply it (R6 as for planar positions).
+template <QuadratureMethod M>
+long polyline_budget(const M& m) {
+  if constexpr (std::same_as<M, Rk4>) return 2 * m.max_steps + 1;
+  else return detail::evaluation_budget(m);
+}
+
 /// n ≥ 2 points uniform in s from s0 to s1 (both inside s_domain()). Positions are running
-/// integrals from the reference point s = 0 (first piece 0 → s0, then piece by piece).
+/// integrals from the reference point s = 0 (first piece 0 → s0, then piece by piece). Once the
+/// pieces have spent polyline_budget(method) evaluations, the remaining points are not integrated
+/// and carry status max_iterations.
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method) {
   method.validate();
@@ -59,11 +71,19 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
     KappaSolution ks;
     r.point = c.frame_at(s, &ks);
     detail::merge_status(acc, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
-    auto piece = method.integrate(f, prev, s);
-    pos += piece.value;
-    acc.error_estimate += piece.error_estimate;
-    acc.evaluations += piece.evaluations;
-    detail::merge_status(acc, piece.status, piece.message);
+    if (acc.evaluations >= polyline_budget(method)) {
+      if (acc.status != Status::max_iterations)
+        acc.message = std::string(M::name) + ": evaluation budget " + std::to_string(polyline_budget(method)) +
+                      " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
+                      " evaluations, before s = " + format_number(s) + "; raise the method's budget";
+      acc.status = Status::max_iterations;
+    } else {
+      auto piece = method.integrate(f, prev, s);
+      pos += piece.value;
+      acc.error_estimate += piece.error_estimate;
+      acc.evaluations += piece.evaluations;
+      detail::merge_status(acc, piece.status, piece.message);
+    }
     prev = s;
     r.point.position = pos;
     r.error_estimate = acc.error_estimate;

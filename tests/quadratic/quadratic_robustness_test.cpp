@@ -92,5 +92,30 @@ TEST(QuadraticRobustness, HermitePolylineRejectsUnrepresentableRanges) {
                      "hermite_polyline(-2.2e108, -2.2e106)");
 }
 
+// Found by the short fuzz run after the R9 fix: s at the reference point κ = 1 (u = 0) is 0 by
+// definition, but the near-region series formed 0·inf for γ = DBL_MAX.
+TEST(QuadraticRobustness, ReferencePointIsZeroForHugeGamma) {
+  const QuadraticLaCurve c(-2.974609375, DBL_MAX, 1);
+  EXPECT_EQ(c.s_at_log_kappa(0.0), 0.0);
+  EXPECT_EQ(c.theta_at_log_kappa(0.0), 0.0);
+}
+
+// Found by the short fuzz run (a 17 s call): a polyline of n pieces gets one evaluation budget in
+// total, not one per piece (R6 for quadratic curves); the points past it carry max_iterations.
+TEST(QuadraticRobustness, PolylineSharesOneEvaluationBudget) {
+  const QuadraticLaCurve c(-5, 1, 1.000000000000001, hybrid_through());
+  GaussKronrod m;
+  m.max_intervals = 500;  // the default budget behaves alike, 40 times slower
+  const auto points = polyline(c, 5.048828125, 2.8396262443943004e+238, 16, m);
+  ASSERT_EQ(points.size(), 16u);
+  // At most the budget plus the one piece that crossed it.
+  EXPECT_LE(points.back().evaluations, polyline_budget(m) + 21 * (2 * m.max_intervals + 1));
+  EXPECT_EQ(points.back().status, Status::max_iterations);
+  EXPECT_NE(points.back().message.find("evaluation budget"), std::string::npos) << points.back().message;
+  for (const auto& p : points) {
+    ASSERT_TRUE(std::isfinite(p.point.position.real()) && std::isfinite(p.point.position.imag()));
+  }
+}
+
 }  // namespace
 }  // namespace lac

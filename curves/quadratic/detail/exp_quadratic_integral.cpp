@@ -135,6 +135,7 @@ double ExpQuadraticIntegral::between(double v, double w) const {
 }
 
 double ExpQuadraticIntegral::operator()(double u) const {
+  if (u == 0) return 0.0;  // the reference point; the series below would form 0·inf for |γ| = DBL_MAX
   if (gamma_ == 0) return u * LaCurve::expm1_ratio(-alpha_ * u);
   if (std::abs(gamma_) * u * u + std::abs(alpha_ * u) <= kNearRegion) return midpoint_series(0.0, u);
   const double e = exponent(u);
