@@ -313,7 +313,8 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
 
 /// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). The
 /// positions are running integrals from the reference point, piece by piece (Rk4: one sweep
-/// over all pieces sharing end values, detail::polyline_rk4).
+/// over all pieces sharing end values, detail::polyline_rk4). The pieces share one evaluation
+/// budget (detail::evaluation_budget); the points past it carry status max_iterations.
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic) {
@@ -349,11 +350,20 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   std::complex<double> pos{};
   PositionResult acc;
   for (auto& r : out) {
-    auto piece = detail::integrate_piece(c, method, used, prev, var(r.point));
-    pos += piece.value;
-    acc.error_estimate += piece.error_estimate;
-    acc.evaluations += piece.evaluations;
-    detail::merge_status(acc, piece.status, piece.message);
+    // The pieces share one evaluation budget (R6): n pieces must not multiply the method's.
+    if (acc.evaluations >= detail::evaluation_budget(method)) {
+      if (acc.status != Status::max_iterations)
+        acc.message = "evaluation budget " + std::to_string(detail::evaluation_budget(method)) +
+                      " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
+                      " evaluations; raise the method's budget";
+      acc.status = Status::max_iterations;
+    } else {
+      auto piece = detail::integrate_piece(c, method, used, prev, var(r.point));
+      pos += piece.value;
+      acc.error_estimate += piece.error_estimate;
+      acc.evaluations += piece.evaluations;
+      detail::merge_status(acc, piece.status, piece.message);
+    }
     prev = var(r.point);
     r.point.position = pos;
     r.error_estimate = acc.error_estimate;

@@ -344,6 +344,19 @@ TEST(LaInvalidInput, DefaultBudgetsBoundPositionWork) {
   EXPECT_EQ(line.back().evaluations, 0);
 }
 
+// Found by the short fuzz run (6.6 s under the sanitizers): the pieces of a polyline share one
+// evaluation budget instead of spending one each; the points past it carry max_iterations.
+TEST(LaInvalidInput, PolylineSharesOneEvaluationBudget) {
+  GaussKronrod gk;
+  gk.max_intervals = 500;  // the default budget behaves alike, 40 times slower
+  const long budget = 21 * (2 * gk.max_intervals + 1);
+  const auto line = polyline(LaCurve(0, 5e-324), Parameter::theta, 16776704, -4.61181640625, 35, gk);
+  EXPECT_EQ(line.back().status, Status::max_iterations);
+  EXPECT_NE(line.back().message.find("evaluation budget"), std::string::npos) << line.back().message;
+  EXPECT_LE(line.back().evaluations, 2 * budget);  // the budget plus the piece that crossed it
+  for (const auto& p : line) ASSERT_TRUE(std::isfinite(std::abs(p.point.position)));
+}
+
 // RK4's observed order is 4 where the integrand is smooth (002's rows, θ ∈ [0, 1]).
 TEST(LaPositions, Rk4ObservedOrderIsFour) {
   for (double alpha : {2.0, 4.0 / 3.0, -1.0}) {
