@@ -168,6 +168,16 @@ long evaluation_budget(const M&) {
 inline long evaluation_budget(const Rk45& m) { return 6 * m.max_steps + 1; }
 inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_intervals + 1); }
 
+/// Evaluations a polyline of n points may spend in all: one position call's budget plus an
+/// allowance of 64 Kronrod panels per point (dense polylines still work), so that its n pieces
+/// cannot multiply the per-call budget. A closed form counts series terms: 10 max_pieces + 1000 n.
+template <class M>
+long polyline_budget(const M& m, long n) {
+  if constexpr (requires { m.max_pieces; }) return 10 * m.max_pieces + 1000 * n;
+  const long base = evaluation_budget(m);
+  return base == std::numeric_limits<long>::max() ? base : base + 64 * 21 * n;
+}
+
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
 /// A non-finite error estimate makes the result a numerical_failure, never a usable value.
 template <class M>
@@ -314,7 +324,7 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
 /// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). The
 /// positions are running integrals from the reference point, piece by piece (Rk4: one sweep
 /// over all pieces sharing end values, detail::polyline_rk4). The pieces share one evaluation
-/// budget (detail::evaluation_budget); the points past it carry status max_iterations.
+/// budget (detail::polyline_budget); the points past it carry status max_iterations.
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic) {
@@ -351,9 +361,9 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   PositionResult acc;
   for (auto& r : out) {
     // The pieces share one evaluation budget (R6): n pieces must not multiply the method's.
-    if (acc.evaluations >= detail::evaluation_budget(method)) {
+    if (acc.evaluations >= detail::polyline_budget(method, n)) {
       if (acc.status != Status::max_iterations)
-        acc.message = "evaluation budget " + std::to_string(detail::evaluation_budget(method)) +
+        acc.message = "evaluation budget " + std::to_string(detail::polyline_budget(method, n)) +
                       " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
                       " evaluations; raise the method's budget";
       acc.status = Status::max_iterations;

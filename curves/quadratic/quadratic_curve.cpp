@@ -129,7 +129,11 @@ KappaSolution QuadraticLaCurve::solve_kappa_near(double s, double log_kappa_gues
 }
 
 double QuadraticLaCurve::theta_of(double s, const KappaSolution& k, bool throw_on_failure) const {
-  if (k.log_kappa == -kInf) return theta_hi_;  // the inflection point (not an underflowed κ)
+  if (k.log_kappa == -kInf) {  // the inflection point, or κ → 0 where θ(κ → 0) is infinite
+    if (std::isfinite(theta_hi_)) return theta_hi_;
+    if (k.status == Status::ok || throw_on_failure) throw_input_error(kFunction, "s", s, kNotRepresentable);
+    return 0.0;  // a failed hybrid_003 solve: the status says so
+  }
   const double theta = -theta_integral_(k.log_kappa) / lambda_;  // past the inflection θ(s_i + t) = θ(s_i − t)
   if (k.status == Status::ok) {
     if (!std::isfinite(theta)) throw_input_error(kFunction, "s", s, kNotRepresentable);  // R9 (c)

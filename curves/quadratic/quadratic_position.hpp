@@ -42,17 +42,18 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method)
   return r;
 }
 
-/// Evaluation budget of one polyline call (its pieces are separate quadrature calls): the
-/// method's own per-call budget, so that n pieces cannot multiply it (R6 as for planar positions).
+/// Evaluation budget of one polyline call of n points (its pieces are separate quadrature calls):
+/// as for planar polylines (detail::polyline_budget), so that n pieces cannot multiply the method's
+/// per-call budget (R6).
 template <QuadratureMethod M>
-long polyline_budget(const M& m) {
+long polyline_budget(const M& m, long n) {
   if constexpr (std::same_as<M, Rk4>) return 2 * m.max_steps + 1;
-  else return detail::evaluation_budget(m);
+  else return detail::polyline_budget(m, n);
 }
 
 /// n ≥ 2 points uniform in s from s0 to s1 (both inside s_domain()). Positions are running
 /// integrals from the reference point s = 0 (first piece 0 → s0, then piece by piece). Once the
-/// pieces have spent polyline_budget(method) evaluations, the remaining points are not integrated
+/// pieces have spent polyline_budget(method, n) evaluations, the remaining points are not integrated
 /// and carry status max_iterations.
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method) {
@@ -71,9 +72,9 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
     KappaSolution ks;
     r.point = c.frame_at(s, &ks);
     detail::merge_status(acc, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
-    if (acc.evaluations >= polyline_budget(method)) {
+    if (acc.evaluations >= polyline_budget(method, n)) {
       if (acc.status != Status::max_iterations)
-        acc.message = std::string(M::name) + ": evaluation budget " + std::to_string(polyline_budget(method)) +
+        acc.message = std::string(M::name) + ": evaluation budget " + std::to_string(polyline_budget(method, n)) +
                       " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
                       " evaluations, before s = " + format_number(s) + "; raise the method's budget";
       acc.status = Status::max_iterations;

@@ -349,12 +349,21 @@ TEST(LaInvalidInput, DefaultBudgetsBoundPositionWork) {
 TEST(LaInvalidInput, PolylineSharesOneEvaluationBudget) {
   GaussKronrod gk;
   gk.max_intervals = 500;  // the default budget behaves alike, 40 times slower
-  const long budget = 21 * (2 * gk.max_intervals + 1);
+  const long budget = 21 * (2 * gk.max_intervals + 1) + 64 * 21 * 35;
   const auto line = polyline(LaCurve(0, 5e-324), Parameter::theta, 16776704, -4.61181640625, 35, gk);
   EXPECT_EQ(line.back().status, Status::max_iterations);
   EXPECT_NE(line.back().message.find("evaluation budget"), std::string::npos) << line.back().message;
   EXPECT_LE(line.back().evaluations, 2 * budget);  // the budget plus the piece that crossed it
   for (const auto& p : line) ASSERT_TRUE(std::isfinite(std::abs(p.point.position)));
+  // The closed form counts series terms against its own budget (fuzz: 6.7 s under the sanitizers).
+  Igf igf;
+  igf.max_pieces = 1000;
+  const auto closed = polyline(LaCurve(0, 2.2250738585072014e-308), Parameter::theta, 850526208, 0, 23, igf);
+  EXPECT_EQ(closed.back().status, Status::max_iterations);
+  EXPECT_LT(closed.back().evaluations, 2 * detail::polyline_budget(igf, 23) + 21 * (2 * GaussKronrod{}.max_intervals + 1));
+  // A dense polyline of a well-behaved curve is not limited by the shared budget.
+  const auto dense = polyline(LaCurve(2, 1), Parameter::theta, 0, 1, 100'000, GaussKronrod{});
+  EXPECT_EQ(dense.back().status, Status::ok);
 }
 
 // RK4's observed order is 4 where the integrand is smooth (002's rows, θ ∈ [0, 1]).

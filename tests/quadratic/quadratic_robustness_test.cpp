@@ -109,12 +109,21 @@ TEST(QuadraticRobustness, PolylineSharesOneEvaluationBudget) {
   const auto points = polyline(c, 5.048828125, 2.8396262443943004e+238, 16, m);
   ASSERT_EQ(points.size(), 16u);
   // At most the budget plus the one piece that crossed it.
-  EXPECT_LE(points.back().evaluations, polyline_budget(m) + 21 * (2 * m.max_intervals + 1));
+  EXPECT_LE(points.back().evaluations, polyline_budget(m, 16) + 21 * (2 * m.max_intervals + 1));
   EXPECT_EQ(points.back().status, Status::max_iterations);
   EXPECT_NE(points.back().message.find("evaluation budget"), std::string::npos) << points.back().message;
   for (const auto& p : points) {
     ASSERT_TRUE(std::isfinite(p.point.position.real()) && std::isfinite(p.point.position.imag()));
   }
+}
+
+// Found by the short fuzz run: 003's hybrid inverse gives κ = 0 (log κ = −inf) where the curve has no
+// inflection, and θ(κ → 0) = inf was returned as θ(s).
+TEST(QuadraticRobustness, ThetaAtVanishingKappaIsAnInputError) {
+  QuadraticOptions o;
+  o.inverse = special::ErfInverseMethod::hybrid_003;
+  const QuadraticLaCurve c(-DBL_MAX, 5e-324, 1, o);
+  expect_input_error([&] { (void)c.theta_at_s(-8); }, "s", "theta_at_s(-8)");
 }
 
 }  // namespace
