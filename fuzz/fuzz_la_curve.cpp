@@ -76,7 +76,7 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
 
   const double t1 = in.number();
   const int n = in.int_in(2, 40);
-  // rk4 runs |Δ|/h steps, capped at 10^8 (seconds of work by design): keep the fuzzer to
+  // rk4 runs |Δ|/h steps, capped at 5·10^6 (seconds under the sanitizers): keep the fuzzer to
   // problems of at most 10^6 steps so that its time bound catches real hangs only.
   if (const Rk4* rk4 = std::get_if<Rk4>(&method)) {
     double span = 0;

@@ -32,9 +32,9 @@ short_runs() {
   case "$1" in
     cli) echo 25000 ;;              # ~360/s
     hermite) echo 6000 ;;           # ~85/s
-    la_curve) echo 4000 ;;          # ~50/s while R6 is open (single inputs of seconds)
+    la_curve) echo 12000 ;;         # ~170/s over a whole run (budget-bound inputs take ~0.3 s)
     planar_segments) echo 25000 ;;  # ~370/s
-    quadratic) echo 600 ;;          # ~8-15/s while R6, R9 are open (single inputs of up to 17 s)
+    quadratic) echo 5000 ;;         # ~75/s over a whole run
     space) echo 1000 ;;             # ~20/s (solver calls of ~0.3 s)
     special) echo 500000 ;;         # ~30000/s
     *) echo 3000 ;;
