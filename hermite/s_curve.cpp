@@ -240,6 +240,10 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   user_angle_curvature(res, res.reversed ? 0.0 : L, theta1, kappa);
   res.residual_angle =
       std::max(std::abs(wrap_angle(theta0 - std::arg(d01))), std::abs(wrap_angle(theta1 - std::arg(d23))));
+  // A check that cannot be evaluated (e.g. α = −1e-304: the reference integral overflows) leaves
+  // the curve unverified: not usable.
+  if (!std::isfinite(res.residual_position) || !std::isfinite(res.residual_angle))
+    return finish(Status::numerical_failure, "the residual check of the end conditions is not a finite number");
   return finish(Status::ok, "");
 }
 

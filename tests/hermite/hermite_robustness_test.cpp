@@ -145,5 +145,25 @@ TEST(HermiteRobustness, G2ReachingBeyondTheDoubleRangeIsNotUsable) {
   expect_finite(ok);
 }
 
+// Found by the short fuzz run: at α = −1.4e-304 the S-curve solved but its residual check was NaN;
+// an unverifiable curve is not usable, and a usable one has finite residuals.
+TEST(HermiteRobustness, SCurveWithNonFiniteResidualIsNotUsable) {
+  const Points P = {std::complex<double>{2, -3.009033203125}, {-3.04345703125, -21809843929088},
+                    {-4.982177734375, 1}, {-0.733154296875, -3641704448}};
+  SCurveResult r;
+  try {
+    r = solve_s_curve(P, -1.381513782954776e-304);
+  } catch (const InputError& e) {
+    SUCCEED() << "rejected: " << e.what();
+    return;
+  }
+  if (usable(r.status)) {
+    EXPECT_TRUE(std::isfinite(r.residual_position)) << r.residual_position;
+    EXPECT_TRUE(std::isfinite(r.residual_angle)) << r.residual_angle;
+  } else {
+    EXPECT_FALSE(r.message.empty());
+  }
+}
+
 }  // namespace
 }  // namespace lac::hermite
