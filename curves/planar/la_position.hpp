@@ -296,6 +296,17 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in
   }
 }
 
+/// Whether a polyline may integrate its next piece: false once `acc` has spent `budget`
+/// evaluations, which makes it max_iterations with a message naming the budget.
+inline bool within_polyline_budget(PositionResult& acc, long budget) {
+  if (acc.evaluations < budget) return true;
+  if (acc.status != Status::max_iterations)
+    acc.message = "evaluation budget " + std::to_string(budget) + " of one polyline call exhausted after " +
+                  std::to_string(acc.evaluations) + " evaluations; raise the method's budget";
+  acc.status = Status::max_iterations;
+  return false;
+}
+
 inline void merge_status(PositionResult& r, Status s, const std::string& message) {
   if (s != Status::ok && r.status == Status::ok) {
     r.status = s;
@@ -361,13 +372,7 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   PositionResult acc;
   for (auto& r : out) {
     // The pieces share one evaluation budget (R6): n pieces must not multiply the method's.
-    if (acc.evaluations >= detail::polyline_budget(method, n)) {
-      if (acc.status != Status::max_iterations)
-        acc.message = "evaluation budget " + std::to_string(detail::polyline_budget(method, n)) +
-                      " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
-                      " evaluations; raise the method's budget";
-      acc.status = Status::max_iterations;
-    } else {
+    if (detail::within_polyline_budget(acc, detail::polyline_budget(method, n))) {
       auto piece = detail::integrate_piece(c, method, used, prev, var(r.point));
       pos += piece.value;
       acc.error_estimate += piece.error_estimate;

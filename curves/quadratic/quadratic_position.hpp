@@ -72,13 +72,7 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
     KappaSolution ks;
     r.point = c.frame_at(s, &ks);
     detail::merge_status(acc, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
-    if (acc.evaluations >= polyline_budget(method, n)) {
-      if (acc.status != Status::max_iterations)
-        acc.message = std::string(M::name) + ": evaluation budget " + std::to_string(polyline_budget(method, n)) +
-                      " of one polyline call exhausted after " + std::to_string(acc.evaluations) +
-                      " evaluations, before s = " + format_number(s) + "; raise the method's budget";
-      acc.status = Status::max_iterations;
-    } else {
+    if (detail::within_polyline_budget(acc, polyline_budget(method, n))) {
       auto piece = method.integrate(f, prev, s);
       pos += piece.value;
       acc.error_estimate += piece.error_estimate;
