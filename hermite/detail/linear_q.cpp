@@ -35,6 +35,7 @@ std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int 
   // κ keeps its sign on a piece, so φ is monotonic there: one more panel per radian of turning.
   const double t0p = std::pow(t0, p);
   const double turning = std::abs(phi(u0 + (e - u0)) - phi(u0 + (e - u0) * t0p));
+  if (!(turning <= kMaxResolvedTurning)) return {NAN, NAN};
   panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
   const double span = (1.0 - t0) / panels;
   for (int panel = 0; panel < panels; ++panel) {
@@ -84,6 +85,7 @@ std::complex<double> graded_from_zero(double beta, double phi_zero, double delta
                                       int panels, long& evaluations) {
   const GaussLegendre01& g = rule();
   const double turning = std::abs(delta) * (1.0 - std::pow(t0, beta));
+  if (!(turning <= kMaxResolvedTurning)) return {NAN, NAN};
   panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
   const double span = (1.0 - t0) / panels;
   const std::vector<double>* powers = t0 == 0 ? &node_powers(beta, panels) : nullptr;

@@ -79,6 +79,10 @@ struct LinearQSegment {
   double phi_b(const LaLaw& law) const { return phi_a + turning(law); }
 };
 
+/// Largest turning |φ(end) − φ(begin)| of one piece that integrate_tangent resolves: 64 panels
+/// of 16 rad each, on which 20-node Gauss–Legendre integrates e^{iφ} to ~1e-12.
+inline constexpr double kMaxResolvedTurning = 1024.0;
+
 /// Gauss–Legendre nodes and weights on [0, 1] (20 points; from Boost.Math's tables).
 const std::array<double, 20>& gl_nodes();
 const std::array<double, 20>& gl_weights();
@@ -88,7 +92,10 @@ const std::array<double, 20>& gl_weights();
 /// length outside) φ − φ* ~ |u − u*|^(1 − 1/α) is not smooth, and the substitution
 /// u = u* + (u_end − u*)·t^4 makes the integrand smooth enough for 20 nodes.
 /// At least `panels` equal panels of 20 nodes per piece, and one per radian of turning on
-/// it; `evaluations` is incremented by the number of integrand calls.
+/// it, at most 64 panels: a piece turning more than kMaxResolvedTurning cannot be resolved
+/// by them and gives NaN (the solvers treat it as a failed evaluation: no curve, fast,
+/// instead of seconds of cos/sin of huge angles). `evaluations` is incremented by the
+/// number of integrand calls.
 std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& seg, long& evaluations, int panels = 1);
 
 /// Default tanh-sinh tolerance of the reference. Its estimate |I_k − I_(k−1)| is pessimistic for this

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "hermite/detail/linear_q.hpp"
 #include "hermite/g2_hermite.hpp"
 #include "hermite/s_curve.hpp"
 
@@ -162,6 +163,43 @@ TEST(HermiteRobustness, SCurveWithNonFiniteResidualIsNotUsable) {
     EXPECT_TRUE(std::isfinite(r.residual_angle)) << r.residual_angle;
   } else {
     EXPECT_FALSE(r.message.empty());
+  }
+}
+
+// A piece turning more than the 64 Gauss–Legendre panels resolve gives NaN (found by
+// fuzz_hermite: a G2 problem with |κ·chord| ~ 1e66 spent ~1 s per Ceres solve on cos/sin of
+// huge angles, past the fuzzer's per-call bound). Up to the bound the value is accurate: a
+// circle (α = −1, q = κ̃ = const) turning Φ rad has ∫e^{iφ} = (e^{iΦ} − 1)/(iΦ).
+TEST(HermiteRobustness, TurningBeyondWhatThePanelsResolveIsNaN) {
+  const detail::LaLaw clothoid{-1.0, 1.0};
+  for (const double turn : {1.0, 100.0, detail::kMaxResolvedTurning}) {
+    long evaluations = 0;
+    const auto got = detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
+    const auto exact = (std::polar(1.0, turn) - 1.0) / std::complex<double>(0.0, turn);
+    EXPECT_LE(std::abs(got - exact), 1e-12) << "turning " << turn;
+  }
+  for (const double turn : {1.01 * detail::kMaxResolvedTurning, 1e66, HUGE_VAL}) {
+    long evaluations = 0;
+    const auto got = detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
+    EXPECT_TRUE(std::isnan(got.real()) && std::isnan(got.imag())) << "turning " << turn << ": " << got;
+    EXPECT_EQ(evaluations, 0);
+  }
+}
+
+TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
+  // The fuzz input: p0 far away (chord 1.4e75), so the normalized curvatures are ~2e66.
+  const double e = -1.5996874935808592e-09;
+  const G2Problem p{{{1.3853946644635051e+75, e}, e, e}, {{e, -1.8325181372347288e-09}, e, e}, -2.9775947041343898e-08};
+  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+    G2Options o;
+    o.solver = solver;
+    o.grid_fallback = false;  // the Bézier-grid start alone scores 10^4 quintics (2e5 evaluations)
+    const G2Result r = solve_g2(p, o);
+    SCOPED_TRACE(std::string(to_string(solver)));
+    EXPECT_FALSE(usable(r.status)) << r.message;
+    EXPECT_FALSE(r.message.empty());
+    EXPECT_LT(r.evaluations, 10'000) << r.message;  // was ~5e6 integrand evaluations for ceres
+    expect_finite(r);
   }
 }
 
