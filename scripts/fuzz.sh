@@ -5,7 +5,7 @@
 # (distinct findings) with notes. See docs/robustness.md.
 #
 # Usage: scripts/fuzz.sh [--short] [--runs N] [--max-time S] [--seed N] [--targets "cli la_curve ..."]
-#                        [--no-build] [--report-only] [--out DIR] [--findings DIR]
+#                        [--jobs N] [--no-build] [--report-only] [--out DIR] [--findings DIR]
 #   default      10^6 executions per target (-runs=1000000), at most 3 h each, libFuzzer fork mode
 #                (a crash does not end the run), random seed, corpus kept in build-fuzz/fuzz-corpus/
 #   --short      the test / CI run: deterministic and bounded. Per target about 60 s of executions at
@@ -15,6 +15,7 @@
 #                fuzz/findings/fuzz_<target>/ as a regression corpus)
 #   --max-time   wall-clock cap per target in seconds (the table reports executions reached)
 #   --seed       libFuzzer -seed (default: 1 with --short, random otherwise)
+#   --jobs       fork-mode workers per target (default 1; not with --short)
 #   --findings   where this run saves finding inputs (default fuzz/findings; CI: a temp dir)
 #   --report-only  rewrite the results from the last run's build-fuzz/fuzz-summary.tsv (same options)
 # Findings: libFuzzer's crash/timeout/oom inputs and the harness's property violations (one input
@@ -45,6 +46,7 @@ RUNS=1000000
 MAX_TIME=10800
 SEED=""
 TARGETS=""
+FORK_JOBS=1
 BUILD=1
 OUT=results
 FINDINGS=fuzz/findings
@@ -59,6 +61,7 @@ while (($#)); do
     --max-time) MAX_TIME=$2; MAX_TIME_GIVEN=1; shift ;;
     --seed) SEED=$2; shift ;;
     --targets) TARGETS=$2; shift ;;
+    --jobs) FORK_JOBS=$2; shift ;;
     --no-build) BUILD=0 ;;
     --report-only) REPORT_ONLY=1; BUILD=0 ;;
     --out) OUT=$2; shift ;;
@@ -75,6 +78,7 @@ COMMAND="scripts/fuzz.sh"
 [ "$MODE" = short ] && ((MAX_TIME_GIVEN == 0)) && MAX_TIME=$SHORT_MAX_TIME
 ((RUNS_GIVEN)) && COMMAND+=" --runs $RUNS"
 ((MAX_TIME_GIVEN)) && COMMAND+=" --max-time $MAX_TIME"
+[ "$FORK_JOBS" != 1 ] && COMMAND+=" --jobs $FORK_JOBS"
 [ -n "$SEED" ] && [ "$MODE" != short -o "$SEED" != 1 ] && COMMAND+=" --seed $SEED"
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
@@ -137,7 +141,7 @@ for t in $TARGETS; do
   if [ "$MODE" = short ]; then
     args+=(-len_control=0)
   else
-    args+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+    args+=("-fork=$FORK_JOBS" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   fi
   [ -n "$SEED" ] && args+=("-seed=$SEED")
   [ "$t" = cli ] && [ -s "$dict" ] && args+=("-dict=$dict")
@@ -203,7 +207,7 @@ done
 # --report-only: LAC_FUZZ_COMMAND may name the invocations that produced the summary rows.
 COMMAND=${LAC_FUZZ_COMMAND:-$COMMAND}
 python3 - "$summary" "$OUT" "$COMMAND" <<'PY'
-import csv, os, sys
+import csv, os, re, sys
 summary, out, command = sys.argv[1:]
 rows = [l.rstrip("\n").split("\t") for l in open(summary) if l.strip()]
 os.makedirs(out, exist_ok=True)
@@ -216,7 +220,7 @@ with open(os.path.join(out, "robustness.csv"), "w", newline="") as f:
 with open(os.path.join(out, "robustness.md"), "w") as f:
     f.write("# Robustness: libFuzzer targets\n\n")
     f.write(f"Written by `{command}` — do not edit by hand; rerun the command.\n\n")
-    f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang, libFuzzer fork mode) for "
+    f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang 14, libFuzzer edge coverage, fork mode unless --short) for "
             "-runs=`runs_asked` executions or at most `max_seconds` s, whichever came first; `executions` is what it reached. "
             "crashes = distinct sanitizer reports, unexpected exception types, errors without a parameter name, "
             "CLI exit status 1; hangs = calls over the per-call CPU-time bound (LAC_FUZZ_CALL_SECONDS, default 1 s) or "
@@ -226,6 +230,26 @@ with open(os.path.join(out, "robustness.md"), "w") as f:
     f.write("| " + " | ".join(cols) + " |\n|" + "---|" * len(cols) + "\n")
     for r in rows:
         f.write("| " + " | ".join(c.replace("|", "/") for c in r) + " |\n")
+    # The fixes: fuzz/fixes.tsv names each finding's regression tests; each must exist under tests/.
+    tests = set()
+    for root, _, files in os.walk("tests"):
+        for name in files:
+            if name.endswith(".cpp"):
+                text = open(os.path.join(root, name), errors="replace").read()
+                tests.update(f"{a}.{b}" for a, b in re.findall(r"^TEST(?:_F|_P)?\((\w+),\s*(\w+)\)", text, re.M))
+    fixes = [l.rstrip("\n").split("\t") for l in open("fuzz/fixes.tsv") if l.strip() and not l.startswith("#")]
+    missing = []
+    f.write("\n## Findings and their fixes\n\nFrom `fuzz/fixes.tsv` (details in docs/robustness.md). Every regression "
+            "test named here exists under tests/ (checked when this table was written) and runs in the test suite, "
+            "plain and under the sanitizers.\n\n")
+    f.write("| " + " | ".join(fixes[0]) + " |\n|" + "---|" * len(fixes[0]) + "\n")
+    for r in fixes[1:]:
+        named = r[-1].split()
+        missing += [t for t in named if t not in tests]
+        r = r[:-1] + [", ".join(f"`{t}`" if t in tests else f"`{t}` (MISSING)" for t in named)]
+        f.write("| " + " | ".join(c.replace("|", "/") for c in r) + " |\n")
+if missing:
+    sys.exit("fuzz.sh: fuzz/fixes.tsv names regression tests that do not exist: " + " ".join(missing))
 PY
 echo "fuzz.sh: wrote $OUT/robustness.md and $OUT/robustness.csv" >&2
 if ((status)); then  # the notes name each finding's call; its input is in the findings folder

@@ -82,7 +82,7 @@ TEST(FuzzRegression, GammaIncDifferenceOfZeroToZeroIsZero) {
   }
 }
 
-// Finding R3 (fuzz_cli): a point count beyond memory is an internal error (exit 1, std::bad_alloc)
+// Finding R4 (fuzz_cli): a point count beyond memory is an internal error (exit 1, std::bad_alloc)
 // instead of invalid input naming the option (exit 2).
 TEST(FuzzRegression, CliRejectsHugePointCounts) {
   for (const std::string args : {"eval --alpha 0.5 --lambda 1 --theta -0.5 --points 2147483647",
