@@ -105,7 +105,7 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQSegment& s
 inline constexpr double kReferenceTolerance = 1e-13;
 
 /// The same integral by Boost tanh-sinh in the original variable, split where q = 0: an
-/// independent evaluation for residual checks (slower).
+/// independent evaluation for residual checks (slower). NaN when tanh-sinh cannot evaluate it.
 std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQSegment& seg,
                                                  double tolerance = kReferenceTolerance);
 

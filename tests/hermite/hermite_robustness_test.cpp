@@ -203,5 +203,38 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
   }
 }
 
+// Found by the 10^6-execution campaign of fuzz_hermite (R16): κ0 = 5e-324 puts the zero of q
+// within rounding of the segment's start; the residual check split off a piece of subnormal
+// width, on which Boost tanh-sinh threw (float_next of NaN) out of solve_g2.
+TEST(HermiteRobustness, G2WithSubnormalEndCurvatureIsVerified) {
+  const G2Problem p{{{2.046630859375, 3.141592653589793}, -1.51708984375, 5e-324},
+                    {{-10, -1}, -5, -0.990478515625}, -1};
+  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+    G2Options o;
+    o.solver = solver;
+    SCOPED_TRACE(std::string(to_string(solver)));
+    G2Result r;
+    EXPECT_NO_THROW(r = solve_g2(p, o));
+    expect_finite(r);
+    if (solver == G2Solver::paper) {
+      EXPECT_EQ(r.status, Status::ok) << r.message;
+      EXPECT_LE(r.residual_position, 1e-10 * std::abs(p.end.position - p.start.position));
+    }
+  }
+}
+
+// Same campaign: at α = −5e-324 the paper's solver converged, the check's reference integral was
+// NaN, and the result was tolerance_not_met (usable) with residual_position = NaN.
+TEST(HermiteRobustness, G2WithUnverifiableResidualIsNotUsable) {
+  const G2Problem p{{{-6.9765625, 1}, 5e-324, 3.141592653589793}, {{-1, 1}, 5e-324, 7.984375}, -5e-324};
+  G2Options o;
+  o.solver = G2Solver::paper;
+  o.grid_fallback = false;
+  const G2Result r = solve_g2(p, o);
+  EXPECT_EQ(r.status, Status::numerical_failure) << r.message;
+  EXPECT_NE(r.message.find("residual check"), std::string::npos) << r.message;
+  expect_finite(r);
+}
+
 }  // namespace
 }  // namespace lac::hermite
