@@ -133,6 +133,8 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   require_finite("g2", "kappa0", pr.start.kappa);
   require_finite("g2", "kappa1", pr.end.kappa);
   if (!(std::abs(pr.alpha) <= kMaxAbsAlpha)) throw_input_error("g2", "alpha", pr.alpha, "[-5, 5]");
+  if (pr.alpha != 0 && std::abs(pr.alpha) < kMinAbsAlpha)
+    throw_input_error("g2", "alpha", pr.alpha, "0 or 1e-300 <= |alpha| <= 5");
   // Finite end points can still be farther apart than the double range (as R10 for S-curves).
   const std::complex<double> d = pr.end.position - pr.start.position;
   const double r = std::abs(d);

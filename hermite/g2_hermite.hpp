@@ -37,6 +37,9 @@ namespace lac::hermite {
 constexpr double kS1 = 0.25;  // 004 §3.1, after Lan et al.
 constexpr double kS2 = 0.75;
 constexpr double kMaxAbsAlpha = 5.0;  // |α| beyond this overflows q = |κh|^(−α) for ordinary data
+/// Smallest nonzero |α|: below it the law's exponents 1/α, (α−1)/α of the linear-q form overflow
+/// (found by fuzz_hermite: α = −5e-324 gave NaN polyline points, R18); α = 0 is the exponential law.
+constexpr double kMinAbsAlpha = 1e-300;
 
 struct G2Endpoint {
   std::complex<double> position;
