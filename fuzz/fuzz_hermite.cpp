@@ -26,13 +26,6 @@ void check_samples(const std::string& what, const std::vector<hermite::CurveSamp
 
 std::string show_point(std::complex<double> p) { return show(p.real()) + "," + show(p.imag()); }
 
-uint64_t whole_input_hash() {  // FNV-1a of the fuzz input
-  uint64_t h = 1469598103934665603ull;
-  for (size_t i = 0; i < lac::fuzz::detail::current_size; ++i)
-    h = (h ^ lac::fuzz::detail::current_data[i]) * 1099511628211ull;
-  return h;
-}
-
 }  // namespace
 
 int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
@@ -53,7 +46,8 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
     // Chosen by a hash of the whole input, not by one byte: mutants of a grid input keep a byte
     // and the campaign spent half its time in the grid; a hash changes with any mutation.
     in.byte();  // the former selector byte, still read so that saved inputs keep their layout
-    o.start = whole_input_hash() % 256 == 0 ? hermite::G2Start::bezier_grid : hermite::G2Start::fast;
+    const uint64_t input_hash = lac::fuzz::detail::fnv1a(lac::fuzz::detail::current_data, lac::fuzz::detail::current_size);
+    o.start = input_hash % 256 == 0 ? hermite::G2Start::bezier_grid : hermite::G2Start::fast;
     o.grid_fallback = false;
     o.verify = in.byte() % 2;
     const std::string what = "solve_g2 p0 " + show_point(p.start.position) + " theta0 " + show(p.start.theta) +

@@ -49,6 +49,13 @@ inline std::string signature(const std::string& kind, const std::string& what) {
   return sig;
 }
 
+/// FNV-1a of a byte string (names saved findings; picks rare options from the whole input).
+inline uint64_t fnv1a(const uint8_t* data, size_t size) {
+  uint64_t hash = 1469598103934665603ull;
+  for (size_t i = 0; i < size; ++i) hash = (hash ^ data[i]) * 1099511628211ull;
+  return hash;
+}
+
 inline bool continue_mode() {
   static const bool on = [] {
     const char* env = std::getenv("LAC_FUZZ_CONTINUE");
@@ -74,8 +81,7 @@ inline void report_finding(const char* kind, const std::string& what) {
   static std::set<std::string> seen;
   const std::string sig = detail::signature(kind, full);
   if (!seen.insert(sig).second) return;
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a of the signature
-  for (char c : sig) hash = (hash ^ static_cast<uint8_t>(c)) * 1099511628211ull;
+  const uint64_t hash = detail::fnv1a(reinterpret_cast<const uint8_t*>(sig.data()), sig.size());
   const char* dir = std::getenv("LAC_FUZZ_FINDINGS_DIR");
   if (!dir || !detail::current_data) return;
   char name[64];

@@ -255,7 +255,8 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   res.residual_curvature = std::max(std::abs(p.law.kappa_of_q(s0.qa) / hr - pr.start.kappa),
                                     std::abs(p.law.kappa_of_q(s2.qb) / hr - pr.end.kappa));
   const double worst = std::max({res.residual_position / r, res.residual_angle, res.residual_curvature * r});
-  if (std::isnan(worst) || !std::isfinite(res.residual_position) || !std::isfinite(res.residual_curvature)) {
+  if (!std::isfinite(res.residual_position) || !std::isfinite(res.residual_angle) ||
+      !std::isfinite(res.residual_curvature)) {
     // A check that cannot be evaluated leaves the curve unverified: not usable, and no NaN returned.
     res.length = 0;
     res.residual_position = res.residual_angle = res.residual_curvature = 0;
