@@ -10,9 +10,9 @@
 #include <numbers>
 #include <random>
 
-#include "hermite/detail/g2_system.hpp"
-#include "hermite/g2_hermite.hpp"
-#include "hermite/s_curve.hpp"
+#include "lac/constructions/detail/g2_system.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/constructions/s_curve.hpp"
 
 namespace {
 

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "experiments/p002_data.hpp"
-#include "integrators/ode.hpp"
+#include "lac/integrators/ode.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <vector>
 
-#include "curves/quadratic/quadratic_position.hpp"
-#include "special/erf_family.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
+#include "lac/special/erf_family.hpp"
 
 namespace {
 

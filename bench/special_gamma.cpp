@@ -6,10 +6,10 @@
 
 #include <complex>
 
-#include "curves/planar/la_igf.hpp"
-#include "curves/planar/la_position.hpp"
-#include "integrators/igf.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/curves/planar/la_igf.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/integrators/igf.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include "cli/command.hpp"
 #include "cli/segment_args.hpp"
 #include "io/timing.hpp"
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace lac::cli {
 

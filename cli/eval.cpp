@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "cli/command.hpp"
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "io/timing.hpp"
 
 namespace lac::cli {

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
-#include "common/error.hpp"
-#include "hermite/g2_hermite.hpp"
+#include "lac/common/error.hpp"
+#include "lac/constructions/g2_hermite.hpp"
 
 namespace lac::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "cli/command.hpp"
-#include "curves/quadratic/quadratic_position.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
 #include "io/timing.hpp"
 
 namespace lac::cli {

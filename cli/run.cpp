@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "cli/command.hpp"
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac::cli {
 

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
-#include "common/error.hpp"
-#include "hermite/s_curve.hpp"
+#include "lac/common/error.hpp"
+#include "lac/constructions/s_curve.hpp"
 
 namespace lac::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cli/command.hpp"
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace lac::cli {
 

@@ -5,7 +5,7 @@
 
 #include "cli/command.hpp"
 #include "io/timing.hpp"
-#include "segments/space/space_segment.hpp"
+#include "lac/constructions/space_segment.hpp"
 
 namespace lac::cli {
 namespace {

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
-#include "common/error.hpp"
-#include "special/erf_family.hpp"
+#include "lac/common/error.hpp"
+#include "lac/special/erf_family.hpp"
 
 namespace lac::cli {
 namespace {

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
-#include "common/error.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/common/error.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 namespace lac::cli {
 namespace {

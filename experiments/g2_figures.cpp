@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "hermite/g2_hermite.hpp"
-#include "hermite/s_curve.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/constructions/s_curve.hpp"
 #include "io/table.hpp"
 
 namespace {

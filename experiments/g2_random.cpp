@@ -17,8 +17,8 @@
 #include <numbers>
 #include <random>
 
-#include "hermite/g2_hermite.hpp"
-#include "hermite/s_curve.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/constructions/s_curve.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "integrators/igf.hpp"
-#include "integrators/quadrature.hpp"
+#include "lac/integrators/igf.hpp"
+#include "lac/integrators/quadrature.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"
 

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"

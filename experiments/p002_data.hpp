@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac::p002 {
 

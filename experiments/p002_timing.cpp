@@ -20,7 +20,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "experiments/p002_data.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"

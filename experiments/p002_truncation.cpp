@@ -20,7 +20,7 @@
 #include <numeric>
 #include <optional>
 
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "experiments/p002_data.hpp"
 #include "io/table.hpp"
 

@@ -25,7 +25,7 @@
 
 #include "io/table.hpp"
 #include "io/timing.hpp"
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace {
 

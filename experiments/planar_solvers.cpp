@@ -13,7 +13,7 @@
 
 #include "io/table.hpp"
 #include "io/timing.hpp"
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace {
 

@@ -19,7 +19,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "curves/quadratic/quadratic_position.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"
 

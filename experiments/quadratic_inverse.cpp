@@ -17,10 +17,10 @@
 #include <limits>
 #include <sstream>
 
-#include "curves/quadratic/quadratic_position.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"
-#include "special/erf_family.hpp"
+#include "lac/special/erf_family.hpp"
 
 namespace {
 

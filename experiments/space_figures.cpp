@@ -14,7 +14,7 @@
 
 #include "io/table.hpp"
 #include "io/timing.hpp"
-#include "segments/space/space_segment.hpp"
+#include "lac/constructions/space_segment.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // Solvers for G1 and compound-rhythm LA space segments (000 §2.2, §4.3) over random drawable
-// configurations (segments/space/drawable_cases.hpp, fixed seed): success rate, wall time per
+// configurations (constructions/space_drawable_cases.hpp, fixed seed): success rate, wall time per
 // segment (median, p10, p90), curve constructions (ODE solves to the cone) and iterations, beside
 // 000's "around 10 ms per compound segment on a Core 2 Duo 3.0 GHz". Writes
 // results/space_solvers.{md,csv}.
@@ -13,7 +13,7 @@
 #include "io/progress.hpp"
 #include "io/table.hpp"
 #include "io/timing.hpp"
-#include "segments/space/drawable_cases.hpp"
+#include "lac/constructions/space_drawable_cases.hpp"
 
 namespace {
 
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   doc.description =
       "Each row solves the same " + std::to_string(count) +
       " random drawable configurations (seed " + std::to_string(seed) +
-      "; generator `segments/space/drawable_cases.hpp`: a standard-form construction at random "
+      "; generator `constructions/space_drawable_cases.hpp`: a standard-form construction at random "
       "(Λ0, ν0) ∈ [0.2, 3] × [0.5, 4] and cone angle θ ∈ [0.3, 1.2] rad, α, β ∈ [−1, 2], Ω0 ∈ [0.05, 0.6], "
       "r_θ ∈ [0.3, 0.7], type 1 or 2, then a random rotation, translation and scale; the solver is not told "
       "(Λ0, ν0)). Success: end-tangent error ≤ 1e-11 rad (the position constraints hold by construction). "

@@ -1,12 +1,12 @@
 // libFuzzer target: G2 Hermite interpolation by a triple LA curve and S-shaped input by one LA
-// curve (hermite/) fed arbitrary end data, slopes and solver choices, and the polylines of
+// curve (constructions/g2_hermite, s_curve) fed arbitrary end data, slopes and solver choices, and the polylines of
 // usable results. Properties: see fuzz/fuzz_support.hpp.
 #include <array>
 #include <string>
 
 #include "fuzz/fuzz_support.hpp"
-#include "hermite/g2_hermite.hpp"
-#include "hermite/s_curve.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/constructions/s_curve.hpp"
 
 using namespace lac;
 using lac::fuzz::guarded;

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string>
 
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace lac;

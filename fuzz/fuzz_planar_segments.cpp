@@ -1,11 +1,11 @@
-// libFuzzer target: planar G1 and compound-rhythm segments (segments/planar) from arbitrary
+// libFuzzer target: planar G1 and compound-rhythm segments (constructions/triangle_g1) from arbitrary
 // control triangles and slopes, with every root finder, and sample_segment of usable results;
 // and the 1-D root finders themselves on a cubic with arbitrary coefficients and bracket.
 // Properties: see fuzz/fuzz_support.hpp.
 #include <string>
 
 #include "fuzz/fuzz_support.hpp"
-#include "segments/planar/g1_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 using namespace lac;
 using lac::fuzz::guarded;

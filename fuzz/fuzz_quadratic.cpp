@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "curves/quadratic/quadratic_position.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace lac;

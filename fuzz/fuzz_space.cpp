@@ -1,4 +1,4 @@
-// libFuzzer target: LA space curves (curves/space) and space segments (segments/space) fed
+// libFuzzer target: LA space curves (curves/space) and space segments (constructions/space_segment) fed
 // arbitrary doubles: the curve laws, Frenet integration (every method) to an arc length and to a
 // cone, the joint continuation, the cone construction at given unknowns, and the G1 / compound
 // solvers (every solver; starts and evaluation caps kept small so that one call stays within
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fuzz/fuzz_support.hpp"
-#include "segments/space/space_segment.hpp"
+#include "lac/constructions/space_segment.hpp"
 
 using namespace lac;
 using lac::fuzz::guarded;

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "fuzz/fuzz_support.hpp"
-#include "special/erf_family.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/special/erf_family.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 using namespace lac;
 using lac::fuzz::guarded;

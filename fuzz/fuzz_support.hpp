@@ -21,7 +21,7 @@
 #include <set>
 #include <string>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac::fuzz {
 

@@ -1,13 +1,13 @@
 // igf: the incomplete-gamma closed form of the planar LA position, for every α (see igf.hpp).
-#include "integrators/igf.hpp"
+#include "lac/integrators/igf.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "common/error.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/common/error.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 namespace lac {
 namespace {

@@ -23,7 +23,7 @@
 #include <complex>
 #include <string_view>
 
-#include "integrators/quadrature.hpp"
+#include "lac/integrators/quadrature.hpp"
 
 namespace lac {
 

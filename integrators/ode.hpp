@@ -8,9 +8,9 @@
 #include <cmath>
 #include <limits>
 
-#include "common/error.hpp"
-#include "common/status.hpp"
-#include "integrators/state.hpp"
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
+#include "lac/integrators/state.hpp"
 
 namespace lac {
 

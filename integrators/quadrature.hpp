@@ -19,9 +19,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/status.hpp"
-#include "integrators/ode.hpp"
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
+#include "lac/integrators/ode.hpp"
 
 namespace lac {
 

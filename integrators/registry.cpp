@@ -1,4 +1,4 @@
-#include "integrators/registry.hpp"
+#include "lac/integrators/registry.hpp"
 
 #include <array>
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <variant>
 
-#include "integrators/quadrature.hpp"
+#include "lac/integrators/quadrature.hpp"
 
 namespace lac {
 

@@ -93,7 +93,7 @@ if ((BUILD)); then
   flags="-g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-coverage=trace-cmp"
   flags+=" -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
   if ! CC=clang CXX=clang++ cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLAC_FUZZERS=ON \
-        -DLAC_BENCHMARKS=OFF -DLAC_SANITIZE=OFF "-DCMAKE_CXX_FLAGS=$flags" >"$log" 2>&1 ||
+        -DLAC_BENCHMARKS=OFF -DLAC_SANITIZE=OFF -DLAC_INSTALL=OFF "-DCMAKE_CXX_FLAGS=$flags" >"$log" 2>&1 ||
      ! cmake --build "$BUILD_DIR" -j "$JOBS" --target lac_fuzzers >"$log" 2>&1; then
     grep -E "error" "$log" | head -40 >&2 || tail -40 "$log" >&2
     exit 1

@@ -1,5 +1,5 @@
 // Name registry and the Ceres-based method of solvers/root_1d.hpp.
-#include "solvers/root_1d.hpp"
+#include "lac/solvers/root_1d.hpp"
 
 #include <array>
 #include <ceres/ceres.h>

@@ -24,8 +24,8 @@
 #include <string>
 #include <string_view>
 
-#include "common/error.hpp"
-#include "common/status.hpp"
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
 
 namespace lac {
 

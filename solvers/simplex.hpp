@@ -14,8 +14,8 @@
 #include <optional>
 #include <string>
 
-#include "common/error.hpp"
-#include "common/status.hpp"
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
 
 namespace lac {
 

@@ -1,4 +1,4 @@
-#include "special/erf_family.hpp"
+#include "lac/special/erf_family.hpp"
 
 #include <cerf.h>
 
@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac::special {
 namespace {

@@ -7,7 +7,7 @@
 //   (erfi(x) = ±e^L, erfc(x) = e^L), which is what the scaled quadratic-curve formulas need.
 #include <string_view>
 
-#include "common/status.hpp"
+#include "lac/common/status.hpp"
 
 namespace lac::special {
 

@@ -1,13 +1,13 @@
 // Complex upper incomplete gamma function: argument checks and the choice of region.
 // Thresholds were set from the worst relative error against tests/reference/gamma_inc.csv
 // (see docs/special_incomplete_gamma.md).
-#include "special/incomplete_gamma.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 #include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 
-#include "common/error.hpp"
-#include "special/detail/incomplete_gamma_regions.hpp"
+#include "lac/common/error.hpp"
+#include "lac/special/detail/incomplete_gamma_regions.hpp"
 
 namespace lac::special {
 namespace {

@@ -21,7 +21,7 @@
 #include <complex>
 #include <string_view>
 
-#include "common/status.hpp"
+#include "lac/common/status.hpp"
 
 namespace lac::special {
 

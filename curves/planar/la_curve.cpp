@@ -1,8 +1,8 @@
-#include "curves/planar/la_curve.hpp"
+#include "lac/curves/planar/la_curve.hpp"
 
 #include <cmath>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac {
 namespace {

@@ -4,8 +4,8 @@
 #include <complex>
 #include <string_view>
 
-#include "curves/planar/la_curve.hpp"
-#include "integrators/igf.hpp"
+#include "lac/curves/planar/la_curve.hpp"
+#include "lac/integrators/igf.hpp"
 
 namespace lac {
 

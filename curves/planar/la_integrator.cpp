@@ -1,4 +1,4 @@
-#include "curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
 
 #include <array>
 

@@ -8,9 +8,9 @@
 #include <variant>
 #include <vector>
 
-#include "curves/planar/la_igf.hpp"
-#include "curves/planar/la_position.hpp"
-#include "integrators/registry.hpp"
+#include "lac/curves/planar/la_igf.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 

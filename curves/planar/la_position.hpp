@@ -13,10 +13,10 @@
 #include <string_view>
 #include <vector>
 
-#include "common/error.hpp"
-#include "common/status.hpp"
-#include "curves/planar/la_curve.hpp"
-#include "integrators/quadrature.hpp"
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
+#include "lac/curves/planar/la_curve.hpp"
+#include "lac/integrators/quadrature.hpp"
 
 namespace lac {
 

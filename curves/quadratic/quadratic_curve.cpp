@@ -1,9 +1,9 @@
-#include "curves/quadratic/quadratic_curve.hpp"
+#include "lac/curves/quadratic/quadratic_curve.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac {
 namespace {

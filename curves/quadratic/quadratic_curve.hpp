@@ -18,10 +18,10 @@
 #include <cmath>
 #include <string_view>
 
-#include "common/status.hpp"
-#include "curves/planar/la_curve.hpp"
-#include "curves/quadratic/detail/exp_quadratic_integral.hpp"
-#include "special/erf_family.hpp"
+#include "lac/common/status.hpp"
+#include "lac/curves/planar/la_curve.hpp"
+#include "lac/curves/quadratic/detail/exp_quadratic_integral.hpp"
+#include "lac/special/erf_family.hpp"
 
 namespace lac {
 

@@ -1,4 +1,4 @@
-#include "curves/quadratic/quadratic_position.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
 
 #include <algorithm>
 #include <array>

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "curves/planar/la_position.hpp"
-#include "curves/quadratic/quadratic_curve.hpp"
-#include "integrators/quadrature.hpp"
-#include "integrators/registry.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/curves/quadratic/quadratic_curve.hpp"
+#include "lac/integrators/quadrature.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 

@@ -1,11 +1,11 @@
-#include "curves/space/frenet.hpp"
+#include "lac/curves/space/frenet.hpp"
 
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <optional>
 
-#include "integrators/ode.hpp"
+#include "lac/integrators/ode.hpp"
 
 namespace lac {
 namespace {

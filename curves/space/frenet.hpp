@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "common/status.hpp"
-#include "curves/space/la_space_curve.hpp"
+#include "lac/common/status.hpp"
+#include "lac/curves/space/la_space_curve.hpp"
 
 namespace lac {
 

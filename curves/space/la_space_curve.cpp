@@ -1,4 +1,4 @@
-#include "curves/space/la_space_curve.hpp"
+#include "lac/curves/space/la_space_curve.hpp"
 
 #include <algorithm>
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 
 namespace lac {
 

@@ -1,6 +1,6 @@
 // Region algorithms of the complex upper incomplete gamma function; see the header for the
 // formulas. Hand-written: Boost.Math's gamma_q/tgamma(a, x) accept real x only.
-#include "special/detail/incomplete_gamma_regions.hpp"
+#include "lac/special/detail/incomplete_gamma_regions.hpp"
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/gamma.hpp>

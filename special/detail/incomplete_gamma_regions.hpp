@@ -3,7 +3,7 @@
 // real a unless noted, z ≠ 0). Exposed for the tests that probe each region on its own.
 #include <complex>
 
-#include "special/incomplete_gamma.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 namespace lac::special::detail {
 

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "curves/planar/la_integrator.hpp"
-#include "curves/planar/la_position.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "tests/support/reference_csv.hpp"
 
 namespace lac {

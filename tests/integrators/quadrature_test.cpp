@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "common/error.hpp"
-#include "integrators/ode.hpp"
-#include "integrators/quadrature.hpp"
-#include "integrators/registry.hpp"
+#include "lac/common/error.hpp"
+#include "lac/integrators/ode.hpp"
+#include "lac/integrators/quadrature.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 namespace {

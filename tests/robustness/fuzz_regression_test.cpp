@@ -10,14 +10,14 @@
 #include <string>
 #include <sys/wait.h>
 
-#include "common/error.hpp"
+#include "lac/common/error.hpp"
 #include "tests/support/run_cli.hpp"
-#include "curves/planar/la_integrator.hpp"
-#include "curves/space/frenet.hpp"
-#include "curves/space/la_space_curve.hpp"
-#include "segments/planar/g1_segment.hpp"
-#include "segments/space/space_segment.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/space/frenet.hpp"
+#include "lac/curves/space/la_space_curve.hpp"
+#include "lac/constructions/triangle_g1.hpp"
+#include "lac/constructions/space_segment.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 
 namespace {
 

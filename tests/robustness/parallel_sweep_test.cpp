@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "hermite/g2_hermite.hpp"
-#include "segments/planar/g1_segment.hpp"
-#include "segments/space/drawable_cases.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/constructions/triangle_g1.hpp"
+#include "lac/constructions/space_drawable_cases.hpp"
 
 namespace {
 
@@ -157,7 +157,7 @@ TEST(ParallelSweep, RandomG2ProblemsSameWithOneAndManyThreads) {
   });
 }
 
-// Random drawable space configurations (segments/space/drawable_cases.hpp), G1 and compound.
+// Random drawable space configurations (constructions/space_drawable_cases.hpp), G1 and compound.
 TEST(ParallelSweep, RandomSpaceSegmentsSameWithOneAndManyThreads) {
   std::mt19937_64 rng(20110315);
   std::vector<lac::DrawableCase> cases;

@@ -9,9 +9,9 @@
 #include <map>
 #include <string>
 
-#include "common/error.hpp"
-#include "special/detail/incomplete_gamma_regions.hpp"
-#include "special/incomplete_gamma.hpp"
+#include "lac/common/error.hpp"
+#include "lac/special/detail/incomplete_gamma_regions.hpp"
+#include "lac/special/incomplete_gamma.hpp"
 #include "tests/support/reference_csv.hpp"
 
 namespace lac::special {

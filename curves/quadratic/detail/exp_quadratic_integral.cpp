@@ -1,9 +1,9 @@
-#include "curves/quadratic/detail/exp_quadratic_integral.hpp"
+#include "lac/curves/quadratic/detail/exp_quadratic_integral.hpp"
 
 #include <array>
 #include <cmath>
 
-#include "curves/planar/la_curve.hpp"
+#include "lac/curves/planar/la_curve.hpp"
 
 namespace lac::detail {
 namespace {

@@ -14,8 +14,8 @@
 // e^(E)·D is formed as exp(E + log|D|), so F is finite whenever the result is.
 #include <limits>
 
-#include "common/status.hpp"
-#include "special/erf_family.hpp"
+#include "lac/common/status.hpp"
+#include "lac/special/erf_family.hpp"
 
 namespace lac::detail {
 

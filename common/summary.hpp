@@ -1,0 +1,49 @@
+#pragma once
+// What every construction returns: the curve, a Summary of how it was obtained (in the spirit of
+// Ceres' Solver::Summary) and the construction's own details. One type for all constructions, so
+// that callers, the command line and the experiments read every result the same way.
+#include <optional>
+#include <string>
+
+#include "lac/common/status.hpp"
+
+namespace lac {
+
+/// Errors of a construction's end conditions on the returned curve, each where the construction
+/// measures it (std::nullopt where it does not apply, e.g. curvature for a G1 construction).
+struct Residuals {
+  std::optional<double> position;   ///< distance of the end point from its target (user units)
+  std::optional<double> angle;      ///< largest end-tangent angle error (rad)
+  std::optional<double> curvature;  ///< largest end-curvature error (user units)
+};
+
+/// How a result was obtained. Counters add up over every run of the call (starts, fallbacks).
+struct Summary {
+  Status status = Status::ok;
+  std::string message;     ///< why, whenever status is not ok (for no_solution: the proven reason)
+  int iterations = 0;      ///< solver iterations
+  long evaluations = 0;    ///< integrand or ODE right-hand-side evaluations
+  long constructions = 0;  ///< trial curves built (each a full evaluation of the end conditions)
+  Residuals residuals;     ///< end-condition errors of the returned curve
+  std::optional<double> error_estimate;  ///< of the returned curve's positions, where the method gives one
+  double seconds = 0;      ///< wall time of the whole call
+  std::string integrator;  ///< registry name of the integrator used
+  std::string solver;      ///< registry name of the solver used
+
+  bool usable() const { return lac::usable(status); }
+};
+
+/// No construction-specific details.
+struct NoInfo {};
+
+/// A construction's result: `curve` is meaningful only when summary.usable().
+template <class Curve, class Info = NoInfo>
+struct Result {
+  Curve curve{};
+  Summary summary;
+  Info info{};
+
+  bool usable() const { return summary.usable(); }
+};
+
+}  // namespace lac

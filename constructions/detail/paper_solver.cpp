@@ -1,0 +1,192 @@
+// 004 §3.3: outer iteration on h, bisection on c30 for Eq. (33), Newton on c10 for Eq. (41).
+#include <cmath>
+#include <optional>
+
+#include "lac/constructions/detail/g2_system.hpp"
+
+namespace lac::hermite::detail {
+namespace {
+
+struct PaperSolver {
+  const NormalizedG2& p;
+  const G2Options& o;
+  long evaluations = 0;
+  int inner_steps = 0;
+  double q0 = 0, q3 = 0;
+
+  // ∂T/∂qa, ∂T/∂qb of a segment's turning T = L·F[qa, qb] (004 Appendix A in linear-q form).
+  double dT_dqa(double L, double a, double b) const {
+    return L * (p.law.divided_difference(a, b) - p.law.kappa_of_q(a)) / (b - a);
+  }
+  double dT_dqb(double L, double a, double b) const {
+    return L * (p.law.kappa_of_q(b) - p.law.divided_difference(a, b)) / (b - a);
+  }
+
+  // Eq. (41) up to the constant factor (α−1)/α: φs + T1 + T2 + T3 − φe as a function of c10.
+  double f(double c10, double q2) const {
+    const double q1 = q0 + c10 * kS1;
+    return p.phi_s + kS1 * p.law.divided_difference(q0, q1) + (kS2 - kS1) * p.law.divided_difference(q1, q2) +
+           (1 - kS2) * p.law.divided_difference(q2, q3) - p.phi_e;
+  }
+  bool q_allowed(double q) const { return std::isfinite(q) && (p.law.alpha <= 0 || q * p.law.sigma > 0); }
+
+  // c10 solving f = 0 for the given q2: Newton with the analytic derivative (Eqs. 42–44), and
+  // bisection where Newton is unusable (c20 ≈ 0, Appendix A) or does not converge.
+  std::optional<double> solve_c10(double q2, double guess) {
+    double c10 = guess;
+    for (int it = 0; it < 50 && inner_steps < 100 * o.max_inner_iterations; ++it, ++inner_steps) {
+      const double q1 = q0 + c10 * kS1;
+      if (!q_allowed(q1)) break;
+      const double fv = f(c10, q2);
+      if (!std::isfinite(fv)) break;
+      if (std::abs(fv) <= 1e-15) return c10;
+      const double c20 = (q2 - q1) / (kS2 - kS1);
+      if (std::abs(c20) < 1e-9 * std::max(1.0, std::abs(q1))) break;  // arc: Appendix A
+      const double df = kS1 * (dT_dqb(kS1, q0, q1) + dT_dqa(kS2 - kS1, q1, q2));
+      if (!std::isfinite(df) || df == 0) break;
+      double step = -fv / df;
+      for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kS1); ++k) step *= 0.5;
+      c10 += step;
+      if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(c10))) return c10;
+    }
+    return bisect_c10(q2, guess);
+  }
+
+  std::optional<double> bisect_c10(double q2, double guess) {
+    // f is monotonic in c10 (κ is monotonic in q); expand a bracket around the guess.
+    auto fv = [&](double c) { return q_allowed(q0 + c * kS1) ? f(c, q2) : NAN; };
+    double lo = guess, flo = fv(lo);
+    if (!std::isfinite(flo)) {
+      lo = p.law.alpha > 0 ? -q0 / kS1 * 0.5 : 0.0;  // for α > 0 halfway to q1 = 0
+      flo = fv(lo);
+    }
+    if (!std::isfinite(flo)) return std::nullopt;
+    double hi = lo, step = 0.1 * std::max(1.0, std::abs(lo));
+    bool found = false;
+    for (int k = 0; k < 80 && !found; ++k, step *= 2) {
+      for (double dir : {1.0, -1.0}) {
+        const double c = lo + dir * step, v = fv(c);
+        if (std::isfinite(v) && (v > 0) != (flo > 0)) {
+          hi = c, found = true;
+          break;
+        }
+      }
+    }
+    if (!found) return std::nullopt;
+    for (int k = 0; k < o.max_inner_iterations; ++k, ++inner_steps) {
+      const double mid = 0.5 * (lo + hi), v = fv(mid);
+      if (!std::isfinite(v)) return std::nullopt;
+      if ((v > 0) == (flo > 0))
+        lo = mid, flo = v;
+      else
+        hi = mid;
+      if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
+    }
+    return 0.5 * (lo + hi);
+  }
+
+  struct Eval {
+    double g = NAN;  // ∫ sin φ dS
+    double c10 = NAN;
+    std::complex<double> integral;
+  };
+  Eval eval_c30(double h, double c30, double c10_guess) {
+    Eval e;
+    const double q2 = q3 - c30 * (1 - kS2);
+    if (!q_allowed(q2)) return e;
+    const auto c10 = solve_c10(q2, c10_guess);
+    if (!c10) return e;
+    e.c10 = *c10;
+    const auto seg = build_segments(p, h, q0 + *c10 * kS1, q2);
+    for (const auto& s : seg) e.integral += integrate_tangent(p.law, s, evaluations);
+    e.g = e.integral.imag();
+    return e;
+  }
+};
+
+}  // namespace
+
+SolverOutcome solve_paper(const NormalizedG2& p, const StartEstimate& s, const G2Options& o) {
+  PaperSolver ps{p, o};
+  SolverOutcome out;
+  double h = s.h;
+  ps.q0 = p.law.q_of_kappa(p.kappa_s * h);
+  ps.q3 = p.law.q_of_kappa(p.kappa_e * h);
+  double c10 = (joint_q(p, s.k1, h) - ps.q0) / kS1;
+  double c30 = (ps.q3 - joint_q(p, s.k2, h)) / (1 - kS2);
+  out.status = Status::max_iterations;
+  out.message = "paper: outer iteration on h reached its cap";
+  for (out.iterations = 1; out.iterations <= o.max_iterations; ++out.iterations) {
+    ps.q0 = p.law.q_of_kappa(p.kappa_s * h);
+    ps.q3 = p.law.q_of_kappa(p.kappa_e * h);
+    // Bisection on c30 for ∫ sin φ dS = 0 (Eq. 33); bracket by doubling steps around c30.
+    auto e0 = ps.eval_c30(h, c30, c10);
+    if (!std::isfinite(e0.g)) {
+      out.status = Status::no_solution;
+      out.message = "paper: no c10 solves Eq. (41) at the current c30";
+      break;
+    }
+    double lo = c30, hi = c30;
+    auto elo = e0, ehi = e0;
+    bool found = e0.g == 0;
+    double step = 0.05 * std::max(1.0, std::abs(c30));
+    for (int k = 0; k < 60 && !found; ++k, step *= 2) {
+      for (double dir : {1.0, -1.0}) {
+        const double c = c30 + dir * step;
+        auto e = ps.eval_c30(h, c, e0.c10);
+        if (std::isfinite(e.g) && (e.g > 0) != (e0.g > 0)) {
+          hi = c, ehi = e, found = true;
+          break;
+        }
+      }
+    }
+    if (!found) {
+      out.status = Status::no_solution;
+      out.message = "paper: no sign change of Eq. (33) found in c30";
+      break;
+    }
+    for (int k = 0; k < o.max_inner_iterations && elo.g != 0; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      auto e = ps.eval_c30(h, mid, elo.c10);
+      if (!std::isfinite(e.g)) break;
+      if ((e.g > 0) == (elo.g > 0))
+        lo = mid, elo = e;
+      else
+        hi = mid, ehi = e;
+      if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
+    }
+    const auto& best = std::abs(elo.g) <= std::abs(ehi.g) ? elo : ehi;
+    c30 = &best == &elo ? lo : hi;
+    c10 = best.c10;
+    const double x = best.integral.real();
+    if (!(x > 0)) {
+      out.status = Status::numerical_failure;
+      out.message = "paper: the end point moved behind the start (h would be negative)";
+      break;
+    }
+    // Eq. (32): h = r / ∫cos φ dS with r = 1.
+    const double h_new = 1.0 / x;
+    const bool converged = std::abs(h_new - h) <= o.tolerance * h;
+    // Keep κ at the joints when h changes (c10, c30 are per unit S of q(κh)).
+    if (!converged) {
+      const double q1 = ps.q0 + c10 * kS1, q2 = ps.q3 - c30 * (1 - kS2);
+      const double k1 = p.law.kappa_of_q(q1) / h * h_new, k2 = p.law.kappa_of_q(q2) / h * h_new;
+      const double q0n = p.law.q_of_kappa(p.kappa_s * h_new), q3n = p.law.q_of_kappa(p.kappa_e * h_new);
+      const double c10n = (p.law.q_of_kappa(k1) - q0n) / kS1, c30n = (q3n - p.law.q_of_kappa(k2)) / (1 - kS2);
+      if (std::isfinite(c10n) && std::isfinite(c30n)) c10 = c10n, c30 = c30n;
+      h = h_new;
+      continue;
+    }
+    out.status = Status::ok;
+    out.message.clear();
+    out.h = h;
+    out.q1 = ps.q0 + c10 * kS1;
+    out.q2 = ps.q3 - c30 * (1 - kS2);
+    break;
+  }
+  if (out.iterations > o.max_iterations) out.iterations = o.max_iterations;
+  out.evaluations = ps.evaluations;
+  return out;
+}
+
+}  // namespace lac::hermite::detail

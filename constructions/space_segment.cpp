@@ -1,0 +1,536 @@
+#include "lac/constructions/space_segment.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "lac/common/error.hpp"
+#include "lac/solvers/least_squares_2d.hpp"
+#include "lac/solvers/newton_2d.hpp"
+#include "lac/solvers/simplex.hpp"
+
+namespace lac {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Box of the unknowns x = (log Λ0, log ν0): outside it a trial counts as undefined. It keeps
+// trial curves away from ν → 0 (unbounded torsion, unbounded step counts) and overflow.
+constexpr double kLogLambdaMin = -25, kLogLambdaMax = 10;
+constexpr double kLogNuMin = -10, kLogNuMax = 15;
+
+// The problem in the local frame of 000 §2.2 (P0 at 0, v0 = +x, P1 in the xy plane, y > 0).
+struct Problem {
+  Eigen::Matrix3d local_to_user;  // columns e1 = v̂0, e2, e3 = e1 × e2
+  Vec3 origin;
+  double distance = 0;            // |P1 − P0|
+  double theta = 0;               // cone half-angle
+  Vec3 target;                    // v̂1 in local coordinates (z negated when mirrored)
+  Vec3 u1, u2;                    // orthonormal basis ⊥ target (for the stereographic residual)
+  bool mirror = false;
+  bool compound = false;
+  CompoundSpaceSpec spec;         // G1 uses alpha0, beta0, omega0
+  const SpaceSegmentOptions* opt = nullptr;
+};
+
+// One construction for given (Λ0, ν0).
+struct Trial {
+  bool defined = false;
+  std::string why;
+  SpacePiece piece0, piece1;
+  Frame3 joint, end;       // standard form
+  double phi = 0;          // rotation about x that brings the end point into the xy plane
+  double scale = 0;
+  Vec3 end_tangent_local;  // after the rotation (local coordinates)
+  long ode_evaluations = 0;
+};
+
+void check_vec(const char* who, const char* name, const Vec3& v) {
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(v[i])) throw_input_error(who, name, v[i], "(finite coordinates)");
+}
+
+Problem make_problem(const char* who, const SpaceEndpoints& e, bool mirror) {
+  check_vec(who, "p0", e.p0);
+  check_vec(who, "v0", e.v0);
+  check_vec(who, "p1", e.p1);
+  check_vec(who, "v1", e.v1);
+  if (!(e.v0.norm() > 0)) throw_input_error(who, "v0", "must be a nonzero vector");
+  if (!(e.v1.norm() > 0)) throw_input_error(who, "v1", "must be a nonzero vector");
+  const Vec3 chord = e.p1 - e.p0;
+  const double scale_ref = std::max({e.p0.cwiseAbs().maxCoeff(), e.p1.cwiseAbs().maxCoeff(), 1e-300});
+  if (!(chord.norm() > 1e-12 * scale_ref)) throw_input_error(who, "p1", "must differ from p0");
+  Problem p;
+  const Vec3 e1 = e.v0.normalized();
+  p.theta = std::atan2(e1.cross(chord).norm(), e1.dot(chord));
+  constexpr double kMinAngle = 1e-8;
+  if (!(p.theta > kMinAngle && p.theta < M_PI - kMinAngle))
+    throw_input_error(who, "v0", p.theta,
+                      "angle(v0, p1 - p0) in (1e-8, pi - 1e-8): v0 parallel to p1 - p0 makes the cone degenerate");
+  const Vec3 e2 = (chord - chord.dot(e1) * e1).normalized();
+  p.local_to_user.col(0) = e1;
+  p.local_to_user.col(1) = e2;
+  p.local_to_user.col(2) = e1.cross(e2);
+  p.origin = e.p0;
+  p.distance = chord.norm();
+  p.mirror = mirror;
+  p.target = p.local_to_user.transpose() * e.v1.normalized();
+  if (mirror) p.target.z() = -p.target.z();
+  // any orthonormal pair ⊥ target
+  const Vec3 helper = std::abs(p.target.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  p.u1 = (helper - helper.dot(p.target) * p.target).normalized();
+  p.u2 = p.target.cross(p.u1);
+  return p;
+}
+
+void validate_spec(const char* who, const CompoundSpaceSpec& s, bool compound) {
+  require_finite(who, compound ? "alpha0" : "alpha", s.alpha0);
+  require_finite(who, compound ? "beta0" : "beta", s.beta0);
+  if (!(s.omega0 >= 0) || !std::isfinite(s.omega0)) throw_input_error(who, compound ? "omega0" : "omega", s.omega0, "[0, inf)");
+  if (s.type != TorsionType::type1 && s.type != TorsionType::type2)
+    throw_input_error(who, "type", static_cast<double>(s.type), "{1, 2}");
+  if (!compound) return;
+  require_finite(who, "alpha1", s.alpha1);
+  require_finite(who, "beta1", s.beta1);
+  if (!(s.r_theta > 0 && s.r_theta < 1)) throw_input_error(who, "r_theta", s.r_theta, "(0, 1)");
+}
+
+CompoundSpaceSpec as_compound(const G1SpaceSpec& g) {
+  CompoundSpaceSpec c;
+  c.alpha0 = c.alpha1 = g.alpha;
+  c.beta0 = c.beta1 = g.beta;
+  c.omega0 = g.omega;
+  c.type = g.type;
+  return c;
+}
+
+// Largest s a trial may integrate to from s0: inside the s range (with a margin), and within the
+// remaining turning and torsion-turning budgets. ≤ s0 means no room.
+double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double torsion_budget, double max_length) {
+  const double hi = c.s_range().hi;
+  double lim = std::isfinite(hi) ? hi - 1e-9 * std::max(1.0, std::abs(hi)) : kInf;
+  lim = std::min(lim, max_length);  // the turning of α < 1 is bounded: the budgets may never bind
+  lim = std::min(lim, c.s_at_turning(c.turning(s0) + turn_budget));
+  lim = std::min(lim, c.s_at_torsion_turning(c.torsion_turning(s0) + torsion_budget));
+  return lim;
+}
+
+// `frenet`: integration settings (default: the options'); screening uses coarser ones.
+Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet) {
+  Trial t;
+  const SpaceSegmentOptions& o = *pb.opt;
+  const FrenetOptions& fo = frenet ? *frenet : o.frenet;
+  const CompoundSpaceSpec& s = pb.spec;
+  if (!(lambda0 >= 0) || !(nu0 > 0) || !std::isfinite(lambda0) || !std::isfinite(nu0)) {
+    t.why = "lambda0 or nu0 out of range";
+    return t;
+  }
+  const LaSpaceCurve c0(s.alpha0, s.beta0, lambda0, s.omega0, nu0, s.type);
+  const double cone0 = pb.compound ? s.r_theta * pb.theta : pb.theta;
+  const double lim0 = s_limit(c0, 0.0, o.max_turning, o.max_torsion_turning, o.max_length);
+  if (!(lim0 > 0)) {
+    t.why = "no room in the s range";
+    return t;
+  }
+  const FrenetResult a = integrate_to_cone(c0, Frame3{}, 0.0, lim0, cone0, fo);
+  t.ode_evaluations += a.evaluations;
+  if (a.status != Status::ok || !a.met_cone) {
+    t.why = a.status != Status::ok ? a.message : "segment 0 does not meet the cone before its s range or turning cap ends";
+    return t;
+  }
+  t.piece0 = {s.alpha0, s.beta0, lambda0, s.omega0, nu0, s.type, 0.0, a.s};
+  t.joint = a.frame;
+  Frame3 end = a.frame;
+  if (pb.compound) {
+    const JointContinuation j =
+        continue_at_joint(s.alpha0, s.alpha1, s.beta0, s.beta1, lambda0, s.omega0, s.type, c0.rho(a.s), c0.mu(a.s));
+    if (!j.valid) {
+      t.why = "no positive nu1 continues the torsion law at the joint";
+      return t;
+    }
+    const LaSpaceCurve c1(s.alpha1, s.beta1, j.lambda1, j.omega1, j.nu1, s.type);
+    if (!c1.contains(j.s_c)) {
+      t.why = "joint arc length outside segment 1's s range";
+      return t;
+    }
+    const double lim1 = s_limit(c1, j.s_c, o.max_turning - c0.turning(a.s), o.max_torsion_turning - c0.torsion_turning(a.s),
+                               o.max_length);
+    if (!(lim1 > j.s_c) || !std::isfinite(lim1)) {
+      t.why = "no room for segment 1";
+      return t;
+    }
+    const FrenetResult b = integrate_to_cone(c1, a.frame, j.s_c, lim1, pb.theta, fo);
+    t.ode_evaluations += b.evaluations;
+    if (b.status != Status::ok || !b.met_cone) {
+      t.why = b.status != Status::ok ? b.message : "segment 1 does not meet the outer cone before its s range or turning cap ends";
+      return t;
+    }
+    t.piece1 = {s.alpha1, s.beta1, j.lambda1, j.omega1, j.nu1, s.type, j.s_c, b.s};
+    end = b.frame;
+  }
+  t.end = end;
+  t.phi = std::atan2(end.p.z(), end.p.y());
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(-t.phi, Vec3::UnitX()).toRotationMatrix();
+  t.end_tangent_local = rot * end.t;
+  t.scale = pb.distance / end.p.norm();
+  t.defined = std::isfinite(t.scale) && t.scale > 0;
+  if (!t.defined) t.why = "end point at the apex";
+  return t;
+}
+
+// A trial whose curve laws are not representable (LaSpaceCurve rejects Λ, Ω, ν or an arc length
+// where k·s overflows: R11 of docs/robustness.md) is an undefined trial, not the caller's error.
+Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet = nullptr) {
+  try {
+    return construct_unchecked(pb, lambda0, nu0, frenet);
+  } catch (const InputError& e) {
+    Trial t;
+    t.why = std::string("trial curve not representable in double precision: ") + e.what();
+    return t;
+  }
+}
+
+double tangent_angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+std::optional<Vec2> stereographic_residual(const Problem& pb, const Trial& t) {
+  const Vec3& te = t.end_tangent_local;
+  const double d = 1.0 + te.dot(pb.target);
+  if (!(d > 1e-12)) return std::nullopt;
+  return Vec2(2.0 * te.dot(pb.u1) / d, 2.0 * te.dot(pb.u2) / d);
+}
+
+bool in_box(const Vec2& x) {
+  return x[0] >= kLogLambdaMin && x[0] <= kLogLambdaMax && x[1] >= kLogNuMin && x[1] <= kLogNuMax;
+}
+
+SpaceSegmentResult to_result(const Problem& pb, const Trial& t, SpaceSolver solver) {
+  SpaceSegmentResult r;
+  r.solver = solver;
+  r.frenet = pb.opt->frenet;
+  r.ode_evaluations = t.ode_evaluations;
+  if (!t.defined) {
+    r.status = Status::no_solution;
+    r.message = t.why;
+    r.tangent_error = kInf;
+    return r;
+  }
+  r.pieces.push_back(t.piece0);
+  if (pb.compound) r.pieces.push_back(t.piece1);
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(-t.phi, Vec3::UnitX()).toRotationMatrix();
+  Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity();
+  if (pb.mirror) mirror(2, 2) = -1;
+  r.placement = pb.local_to_user * mirror * rot * t.scale;
+  r.origin = pb.origin;
+  r.scale = t.scale;
+  r.torsion_sign = pb.mirror ? -1 : 1;
+  r.joint_frame = t.joint;
+  double std_length = 0;
+  for (const auto& p : r.pieces) std_length += p.s_end - p.s_begin;
+  r.length = t.scale * std_length;
+  r.tangent_error = tangent_angle(t.end_tangent_local, pb.target);
+  r.end_tangent = (pb.local_to_user * mirror * t.end_tangent_local).normalized();
+  const Vec3 end_user = r.origin + r.placement * t.end.p;
+  r.position_error = (end_user - (pb.origin + pb.local_to_user * Vec3(pb.distance * std::cos(pb.theta),
+                                                                        pb.distance * std::sin(pb.theta), 0)))
+                         .norm();
+  if (pb.compound) r.joint = r.origin + r.placement * t.joint.p;
+  r.status = r.tangent_error <= pb.opt->tangent_tolerance ? Status::ok : Status::tolerance_not_met;
+  return r;
+}
+
+struct RunOutcome {
+  Vec2 x;
+  bool success = false;
+  int iterations = 0;
+  long evaluations = 0;
+  std::string message;
+};
+
+RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
+  const SpaceSegmentOptions& o = *pb.opt;
+  RunOutcome out;
+  auto trial = [&](const Vec2& x) -> std::optional<Trial> {
+    if (!in_box(x) || ode_evals >= o.max_ode_evaluations) return std::nullopt;  // budget spent: undefined
+    Trial t = construct(pb, std::exp(x[0]), std::exp(x[1]));
+    ode_evals += t.ode_evaluations;
+    if (!t.defined) return std::nullopt;
+    return t;
+  };
+  switch (o.solver) {
+    case SpaceSolver::simplex: {
+      SimplexOptions so;
+      so.initial_step = 0.3;
+      so.value_target = o.tangent_tolerance;
+      so.x_tolerance = 1e-13;
+      so.max_evaluations = o.max_evaluations;
+      so.max_iterations = o.max_evaluations;
+      so.restarts = 3;
+      auto f = [&](const Vec2& x) -> std::optional<double> {
+        const auto t = trial(x);
+        if (!t) return std::nullopt;
+        return tangent_angle(t->end_tangent_local, pb.target);
+      };
+      const auto res = minimize_simplex<2>(f, x0, so);
+      out = {res.x, res.value <= o.tangent_tolerance, static_cast<int>(res.iterations), res.evaluations, res.message};
+      break;
+    }
+    case SpaceSolver::newton: {
+      NewtonOptions no;
+      no.residual_tolerance = o.tangent_tolerance;
+      no.max_evaluations = o.max_evaluations;
+      no.fd_step = 1e-7;
+      no.max_step = 1.5;
+      no.max_iterations = 25;  // converging runs need 4–8; a run this long is better restarted elsewhere
+      auto f = [&](const Vec2& x) -> std::optional<Vec2> {
+        const auto t = trial(x);
+        if (!t) return std::nullopt;
+        return stereographic_residual(pb, *t);
+      };
+      const auto res = solve_newton<2>(f, x0, no);
+      out = {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
+      break;
+    }
+    case SpaceSolver::ceres: {
+      LeastSquaresOptions lo;
+      lo.residual_tolerance = o.tangent_tolerance;
+      lo.max_iterations = 100;
+      auto f = [&](const Vec2& x) -> std::optional<Vec2> {
+        const auto t = trial(x);
+        if (!t) return std::nullopt;
+        return stereographic_residual(pb, *t);
+      };
+      const auto res = solve_least_squares<2, 2>(f, x0, lo);
+      out = {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
+      break;
+    }
+  }
+  return out;
+}
+
+SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec, bool compound,
+                         const SpaceSegmentOptions& opt) {
+  opt.validate();
+  validate_spec(who, spec, compound);
+  std::array<Problem, 2> problems = {make_problem(who, ends, false), make_problem(who, ends, true)};
+  for (auto& p : problems) {
+    p.compound = compound;
+    p.spec = spec;
+    p.opt = &opt;
+  }
+  // Automatic Λ0 start (lambda_start = 0): for α0 < 1 the total turning is bounded by
+  // 1/((1 − α0)Λ0) (MATH.md §1 θ range) and must exceed about twice the cone angle.
+  const double lambda_start = opt.lambda_start > 0 ? opt.lambda_start
+                              : spec.alpha0 < 1  ? std::min(1.0, 1.0 / (3.0 * problems[0].theta * (1.0 - spec.alpha0)))
+                                                 : 1.0;
+  const Vec2 x_start(std::log(lambda_start), std::log(opt.nu_start));
+  long ode = 0, evals = 0;
+  int iterations = 0, runs = 0;
+  const int hands = opt.allow_mirror ? 2 : 1;
+  struct Candidate {
+    double error;
+    int hand;
+    Vec2 x;
+  };
+  // End-tangent error of the construction at x for each hand; undefined points are dropped.
+  // Screening only ranks starting points: a coarse tolerance (1e-6) is enough and 3–4× cheaper.
+  FrenetOptions coarse = opt.frenet;
+  coarse.rtol = std::max(coarse.rtol, 1e-6);
+  coarse.atol = std::max(coarse.atol, 1e-7);
+  coarse.h = std::max(coarse.h, 1e-2);
+  auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const FrenetOptions* fo) {
+    for (int h = 0; h < hands; ++h) {
+      if (!in_box(x) || ode >= opt.max_ode_evaluations) continue;
+      const Trial t = construct(problems[h], std::exp(x[0]), std::exp(x[1]), fo);
+      ode += t.ode_evaluations;
+      ++evals;
+      if (t.defined) out.push_back({tangent_angle(t.end_tangent_local, problems[h].target), h, x});
+    }
+  };
+  std::string last_message = "no starting point gave a defined curve";
+  auto attempt = [&](const Candidate& c) -> std::optional<SpaceSegmentResult> {
+    const Problem& pb = problems[c.hand];
+    ++runs;
+    const RunOutcome out = run_solver(pb, c.x, ode);
+    iterations += out.iterations;
+    evals += out.evaluations;
+    if (!out.message.empty()) last_message = out.message;
+    if (!out.success) return std::nullopt;
+    const Trial t = construct(pb, std::exp(out.x[0]), std::exp(out.x[1]));
+    ode += t.ode_evaluations;
+    ++evals;
+    SpaceSegmentResult r = to_result(pb, t, opt.solver);
+    r.iterations = iterations;
+    r.evaluations = evals;
+    r.ode_evaluations = ode;
+    r.runs = runs;
+    if (r.status != Status::ok) return std::nullopt;
+    return r;
+  };
+  auto by_error = [](const Candidate& a, const Candidate& b) { return a.error < b.error; };
+  // Phase 1: the given start, with the hand whose end tangent is closer.
+  std::vector<Candidate> first;
+  screen(x_start, first, nullptr);
+  std::sort(first.begin(), first.end(), by_error);
+  if (!first.empty())
+    if (auto r = attempt(first.front())) return *r;
+  // Phase 2: screen a log-space grid around the start (both hands) and run the solver from the
+  // best remaining points, up to max_starts runs in all.
+  std::vector<Candidate> grid;
+  for (int i = -3; i <= 3; ++i)
+    for (int k = -2; k <= 3; ++k)
+      if (i != 0 || k != 0) screen(x_start + Vec2(i, k), grid, &coarse);
+  if (first.size() > 1) grid.push_back(first[1]);
+  std::sort(grid.begin(), grid.end(), by_error);
+  for (const Candidate& c : grid) {
+    if (runs >= opt.max_starts || ode >= opt.max_ode_evaluations) break;
+    if (auto r = attempt(c)) return *r;
+  }
+  SpaceSegmentResult r;
+  r.solver = opt.solver;
+  r.tangent_error = kInf;
+  if (ode >= opt.max_ode_evaluations) {
+    r.status = Status::max_iterations;
+    r.message = std::string(to_string(opt.solver)) + ": Frenet evaluation budget max_ode_evaluations = " +
+                std::to_string(opt.max_ode_evaluations) + " spent after " + std::to_string(runs) + " solver runs (" +
+                last_message + ")";
+  } else {
+    r.status = Status::no_solution;
+    r.message = std::string(to_string(opt.solver)) + ": no curve met the end tangent within " + std::to_string(runs) +
+                " solver runs (" + last_message + ")";
+  }
+  r.iterations = iterations;
+  r.evaluations = evals;
+  r.ode_evaluations = ode;
+  r.runs = runs;
+  r.frenet = opt.frenet;
+  return r;
+}
+
+SpaceSegmentResult construct_only(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                  bool compound, double lambda0, double nu0, bool mirror,
+                                  const SpaceSegmentOptions& opt) {
+  opt.validate();
+  validate_spec(who, spec, compound);
+  if (!(lambda0 >= 0) || !std::isfinite(lambda0)) throw_input_error(who, "lambda0", lambda0, "[0, inf)");
+  if (!(nu0 > 0) || !std::isfinite(nu0)) throw_input_error(who, "nu0", nu0, "(0, inf)");
+  Problem pb = make_problem(who, ends, mirror);
+  pb.compound = compound;
+  pb.spec = spec;
+  pb.opt = &opt;
+  const Trial t = construct(pb, lambda0, nu0);
+  SpaceSegmentResult r = to_result(pb, t, opt.solver);
+  r.evaluations = 1;
+  return r;
+}
+
+}  // namespace
+
+SpaceSolver parse_space_solver(std::string_view name) {
+  if (name == "simplex") return SpaceSolver::simplex;
+  if (name == "ceres") return SpaceSolver::ceres;
+  if (name == "newton") return SpaceSolver::newton;
+  throw_input_error("parse_space_solver", "solver", "unknown name '" + std::string(name) + "' (simplex | ceres | newton)");
+}
+
+std::string_view to_string(SpaceSolver s) {
+  switch (s) {
+    case SpaceSolver::simplex: return "simplex";
+    case SpaceSolver::ceres: return "ceres";
+    case SpaceSolver::newton: return "newton";
+  }
+  return "unknown";
+}
+
+void SpaceSegmentOptions::validate() const {
+  constexpr const char* who = "SpaceSegmentOptions";
+  if (!(tangent_tolerance >= 1e-14 && tangent_tolerance < 1)) throw_input_error(who, "tangent_tolerance", tangent_tolerance, "[1e-14, 1)");
+  frenet.validate();
+  if (!(max_turning > 0)) throw_input_error(who, "max_turning", max_turning, "(0, inf]");
+  if (!(max_torsion_turning > 0)) throw_input_error(who, "max_torsion_turning", max_torsion_turning, "(0, inf]");
+  if (!(max_length > 0) || !std::isfinite(max_length)) throw_input_error(who, "max_length", max_length, "(0, inf)");
+  if (!(lambda_start >= 0) || !std::isfinite(lambda_start)) throw_input_error(who, "lambda_start", lambda_start, "[0, inf)");
+  if (!(nu_start > 0) || !std::isfinite(nu_start)) throw_input_error(who, "nu_start", nu_start, "(0, inf)");
+  if (max_starts < 1) throw_input_error(who, "max_starts", max_starts, "[1, inf)");
+  if (max_evaluations < 10) throw_input_error(who, "max_evaluations", static_cast<double>(max_evaluations), "[10, inf)");
+  if (max_ode_evaluations < 1)
+    throw_input_error(who, "max_ode_evaluations", static_cast<double>(max_ode_evaluations), "[1, inf)");
+}
+
+SpaceSegmentResult solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                          const SpaceSegmentOptions& options) {
+  return solve("solve_g1_space_segment", ends, as_compound(spec), false, options);
+}
+
+SpaceSegmentResult solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                const SpaceSegmentOptions& options) {
+  return solve("solve_compound_space_segment", ends, spec, true, options);
+}
+
+SpaceSegmentResult construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec, double lambda,
+                                              double nu, bool mirror, const SpaceSegmentOptions& options) {
+  return construct_only("construct_g1_space_segment", ends, as_compound(spec), false, lambda, nu, mirror, options);
+}
+
+SpaceSegmentResult construct_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                    double lambda0, double nu0, bool mirror,
+                                                    const SpaceSegmentOptions& options) {
+  return construct_only("construct_compound_space_segment", ends, spec, true, lambda0, nu0, mirror, options);
+}
+
+SpaceEndpoints drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0, double nu0,
+                                  double theta, Status* status, const SpaceSegmentOptions& options) {
+  if (!(theta > 1e-8 && theta < M_PI - 1e-8)) throw_input_error("drawable_endpoints", "theta", theta, "(1e-8, pi - 1e-8)");
+  SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(std::cos(theta), std::sin(theta), 0), Vec3::UnitX()};
+  const SpaceSegmentResult r = construct_only("drawable_endpoints", e, spec, compound, lambda0, nu0, false, options);
+  if (status) *status = r.pieces.empty() ? Status::no_solution : Status::ok;
+  if (!r.pieces.empty()) e.v1 = r.end_tangent;
+  return e;
+}
+
+std::vector<SpaceSample> space_segment_points(const SpaceSegmentResult& r, int n, Status* status) {
+  if (r.pieces.empty()) throw_input_error("space_segment_points", "r", "has no curve (status " + std::string(to_string(r.status)) + ")");
+  const int pieces = static_cast<int>(r.pieces.size());
+  if (n < 2 * pieces) throw_input_error("space_segment_points", "n", n, "[2 per piece, inf)");
+  double total = 0;
+  for (const auto& p : r.pieces) total += p.s_end - p.s_begin;
+  std::vector<SpaceSample> out;
+  Status st = Status::ok;
+  Frame3 start;
+  double s_user = 0;
+  int left = n;
+  for (int i = 0; i < pieces; ++i) {
+    const SpacePiece& pc = r.pieces[static_cast<size_t>(i)];
+    const int m = i + 1 == pieces ? left
+                                  : std::clamp(static_cast<int>(std::lround(n * (pc.s_end - pc.s_begin) / total)), 2,
+                                               left - 2 * (pieces - i - 1));
+    left -= m;
+    const LaSpaceCurve c(pc.alpha, pc.beta, pc.lambda, pc.omega, pc.nu, pc.type);
+    if (i > 0) start = r.joint_frame;
+    Status si = Status::ok;
+    const std::vector<Frame3> frames = sample_frenet(c, start, pc.s_begin, pc.s_end, m, r.frenet, &si);
+    if (si != Status::ok) st = si;
+    for (int k = 0; k < m; ++k) {
+      const Frame3& f = frames[static_cast<size_t>(k)];
+      const double s_std = pc.s_begin + (pc.s_end - pc.s_begin) * k / (m - 1);
+      SpaceSample smp;
+      smp.piece = i;
+      smp.s = s_user + r.scale * (s_std - pc.s_begin);
+      smp.p = r.origin + r.placement * f.p;
+      smp.t = (r.placement * f.t).normalized();
+      smp.n = (r.placement * f.n).normalized();
+      smp.b = smp.t.cross(smp.n);
+      smp.kappa = c.kappa(s_std) / r.scale;
+      smp.tau = r.torsion_sign * c.tau(s_std) / r.scale;
+      out.push_back(smp);
+    }
+    s_user += r.scale * (pc.s_end - pc.s_begin);
+  }
+  if (status) *status = st;
+  return out;
+}
+
+}  // namespace lac

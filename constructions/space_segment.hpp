@@ -1,0 +1,142 @@
+#pragma once
+// G1 LA space-curve segments by the cone construction (000 §2.2) and compound-rhythm space
+// segments (000 §4), MATH.md §3.
+//
+// Given P0, v0, P1, v1 (user coordinates), move P0 to the origin, v0 to +x and P1 into the xy
+// plane (y > 0). The cone with apex 0, axis +x and half-angle θ = angle(P1 − P0, v0) contains P1.
+// For trial unknowns (Λ0, ν0) the standard-form curve is integrated until it meets the cone
+// (compound: segment 0 until the inner cone r_θ·θ, segment 1 — parameters from the LCG/LTG
+// continuity at the joint — until the outer cone), rotated about x into the xy plane and scaled
+// onto P1; so the position constraints hold for every (Λ0, ν0) and only the end tangent is solved:
+// two conditions in (log Λ0, log ν0). Solvers by name: "simplex" (000's modified downhill simplex
+// on the end-tangent angle), "ceres" (Levenberg–Marquardt), "newton" (damped Newton); the latter
+// two on the stereographic end-tangent residual 2 (t·u1, t·u2)/(1 + t·v̂1), zero only at t = v̂1.
+//
+// The standard form has positive torsion (right-handed). With allow_mirror the mirror-image
+// problem (z → −z in the local frame) is tried as well; the result then has negative torsion.
+#include <Eigen/Core>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lac/common/status.hpp"
+#include "lac/curves/space/frenet.hpp"
+#include "lac/curves/space/la_space_curve.hpp"
+
+namespace lac {
+
+enum class SpaceSolver { simplex, ceres, newton };
+/// "simplex" | "ceres" | "newton"; InputError naming "solver" otherwise.
+SpaceSolver parse_space_solver(std::string_view name);
+std::string_view to_string(SpaceSolver s);
+
+/// Endpoint data in user coordinates; v0, v1 are directions (any nonzero length).
+struct SpaceEndpoints {
+  Vec3 p0 = Vec3::Zero();
+  Vec3 v0 = Vec3::UnitX();
+  Vec3 p1 = Vec3::UnitY();
+  Vec3 v1 = Vec3::UnitY();
+};
+
+/// Monotonic-rhythm segment: α, β any finite; Ω ≥ 0.
+struct G1SpaceSpec {
+  double alpha = 0, beta = 0, omega = 0.1;
+  TorsionType type = TorsionType::type1;
+};
+
+/// Compound-rhythm segment (000 §4.1): slopes of both segments, Ω0 ≥ 0, r_θ ∈ (0, 1).
+struct CompoundSpaceSpec {
+  double alpha0 = 0, alpha1 = 0, beta0 = 0, beta1 = 0, omega0 = 0.1, r_theta = 0.5;
+  TorsionType type = TorsionType::type1;
+};
+
+struct SpaceSegmentOptions {
+  SpaceSolver solver = SpaceSolver::newton;  ///< newton is the fastest here (see docs/space_curves.md)
+  double tangent_tolerance = 1e-11;  ///< success: end-tangent angle error ≤ this (rad)
+  /// Integration: order-6 Magnus, rtol 1e-10, atol 1e-11 (end tangents accurate to ~1e-13 rad,
+  /// tests/space); rk45 / rk4 selectable.
+  FrenetOptions frenet{FrenetMethod::magnus6, 1e-10, 1e-11};
+  double max_turning = 4 * M_PI;     ///< a trial curve may turn its tangent by at most this (∫κ ds)
+  double max_torsion_turning = 40 * M_PI;  ///< and rotate its frame about T by at most this (∫τ ds)
+  double max_length = 100;           ///< and be at most this long in standard form (ρ(0) = 1)
+  double lambda_start = 0;           ///< first starting point of the solver; 0: automatic (space_segment.cpp)
+  double nu_start = 2.0;
+  /// Solver runs: first from the start (hand with the smaller end-tangent error); if that fails,
+  /// a 7 × 6 grid in (log Λ0, log ν0) around the start is screened (both hands) and the solver is
+  /// rerun from the best grid points.
+  int max_starts = 6;
+  bool allow_mirror = true;          ///< also try the mirror-image (negative torsion) problem
+  long max_evaluations = 1500;       ///< curve constructions per solver run
+  /// Frenet right-hand-side evaluations over the whole call (screening and every run): when spent,
+  /// no further trial is integrated and the result is max_iterations. 10^7 is ~1 s of CPU
+  /// (unsanitized); the drawable cases need ≤ 10^5 with magnus6/rk45 and ~2·10^6 with rk4 and the
+  /// simplex. Without it, rk4 (h = 1e-3) on awkward input ran 1.5·10^8 evaluations (13 s).
+  long max_ode_evaluations = 10'000'000;
+  void validate() const;
+};
+
+/// One LA piece in its own standard form, drawn from s_begin to s_end.
+struct SpacePiece {
+  double alpha = 0, beta = 0, lambda = 0, omega = 0, nu = 1;
+  TorsionType type = TorsionType::type1;
+  double s_begin = 0, s_end = 0;  ///< standard-form arc length
+};
+
+struct SpaceSegmentResult {
+  Status status = Status::no_solution;
+  std::string message;
+  SpaceSolver solver = SpaceSolver::newton;
+  std::vector<SpacePiece> pieces;  ///< 1 (G1) or 2 (compound); empty when no curve was drawn
+  double length = 0;               ///< user units
+  double scale = 0;                ///< user length per standard-form length
+  double tangent_error = 0;        ///< angle(end tangent, v1) in rad (inf when no curve)
+  double position_error = 0;       ///< |end point − P1|, user units
+  Vec3 end_tangent = Vec3::Zero(); ///< unit end tangent of the curve, user coordinates
+  Vec3 joint = Vec3::Zero();       ///< compound: joint position, user coordinates
+  int torsion_sign = 1;            ///< −1: mirror image (negative torsion)
+  int iterations = 0;              ///< solver iterations, all runs
+  long evaluations = 0;            ///< curve constructions (ODE solves to the cone), all runs
+  long ode_evaluations = 0;        ///< Frenet right-hand-side evaluations, all runs
+  int runs = 0;                    ///< solver runs (starts × hands) used
+  // Placement: user = origin + placement · standard-form point (placement includes the scale).
+  Eigen::Matrix3d placement = Eigen::Matrix3d::Identity();
+  Vec3 origin = Vec3::Zero();
+  Frame3 joint_frame;              ///< standard-form frame at the joint (segment 1 starts there)
+  FrenetOptions frenet{};          ///< integration settings the curve was made with
+};
+
+/// A point of a solved segment in user coordinates; kappa, tau in user units (tau < 0 mirrored).
+struct SpaceSample {
+  double s = 0;  ///< arc length from P0, user units
+  Vec3 p, t, n, b;
+  double kappa = 0, tau = 0;
+  int piece = 0;
+};
+
+/// Solves the G1 segment. InputError for invalid input (zero or non-finite vectors, P1 = P0,
+/// v0 parallel to P1 − P0, parameters out of range); a Status when no curve is found.
+SpaceSegmentResult solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                          const SpaceSegmentOptions& options = {});
+/// Solves the compound-rhythm segment (000 §4.3).
+SpaceSegmentResult solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                const SpaceSegmentOptions& options = {});
+
+/// The construction at given (Λ0, ν0) without solving (v1 only enters tangent_error): the curve
+/// that meets P0, v0, P1 for these unknowns. Status no_solution when it does not meet the cone.
+SpaceSegmentResult construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec, double lambda,
+                                              double nu, bool mirror = false, const SpaceSegmentOptions& options = {});
+SpaceSegmentResult construct_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                    double lambda0, double nu0, bool mirror = false,
+                                                    const SpaceSegmentOptions& options = {});
+
+/// Endpoint data for which a curve exists by construction: P0 = 0, v0 = e_x, P1 = (cos θ, sin θ, 0)
+/// and v1 = the end tangent of the construction at (Λ0, ν0), θ ∈ (0, π) the cone half-angle.
+/// Status of the construction in `status` (no_solution: these unknowns never meet the cone).
+SpaceEndpoints drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0, double nu0,
+                                  double theta, Status* status, const SpaceSegmentOptions& options = {});
+
+/// n ≥ 2 points along a drawn segment (split over the pieces by length; each piece includes its
+/// ends). Status via `status` when an integration did not finish.
+std::vector<SpaceSample> space_segment_points(const SpaceSegmentResult& r, int n, Status* status = nullptr);
+
+}  // namespace lac

@@ -1,0 +1,180 @@
+// S-shaped G1 input (004 §2.4–2.5) and the linear-q segment quadrature.
+#include "lac/constructions/s_curve.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "lac/common/error.hpp"
+#include "lac/curves/planar/linear_q.hpp"
+
+namespace lac::hermite {
+namespace {
+
+constexpr double kEndTol = 1e-10;         // end position (× chord) and tangent angles
+constexpr double kQuadratureTol = 2e-13;  // graded Gauss–Legendre vs tanh-sinh, per segment
+
+using Points = std::array<std::complex<double>, 4>;
+
+double wrap(double a) { return std::remainder(a, 2 * std::numbers::pi); }
+
+void expect_interpolates(const SCurveResult& r, const Points& P) {
+  const double chord = std::abs(P[3] - P[0]);
+  const auto a = r.at(0), b = r.at(1);
+  EXPECT_LE(std::abs(a.position - P[0]) / chord, kEndTol);
+  EXPECT_LE(std::abs(b.position - P[3]) / chord, kEndTol);
+  EXPECT_LE(std::abs(wrap(a.theta - std::arg(P[1] - P[0]))), kEndTol);
+  EXPECT_LE(std::abs(wrap(b.theta - std::arg(P[3] - P[2]))), kEndTol);
+  EXPECT_LE(r.residual_position / chord, kEndTol);
+  EXPECT_LE(r.residual_angle, kEndTol);
+}
+
+TEST(SCurve, ParallelTangentsGiveAnSCurveWithOneInflection) {
+  const Points P{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}};
+  for (double alpha : {-0.5, -1.0, -2.0, -4.0}) {
+    for (RootMethod m : {RootMethod::toms748, RootMethod::bisection}) {
+      SCurveOptions o;
+      o.root = m;
+      const auto r = solve_s_curve(P, alpha, o);
+      SCOPED_TRACE("alpha " + std::to_string(alpha) + " " + std::string(to_string(m)));
+      ASSERT_EQ(r.status, Status::ok) << r.message;
+      EXPECT_EQ(r.shape, SCurveShape::s_shaped);
+      expect_interpolates(r, P);
+      ASSERT_GT(r.inflection_s, 0);
+      ASSERT_LT(r.inflection_s, r.length);
+      // Curvature is zero at the inflection and changes sign there.
+      const double t = r.inflection_s / r.length;
+      EXPECT_NEAR(r.at(t).kappa * r.length, 0.0, 1e-9);
+      EXPECT_LT(r.at(0.5 * t).kappa * r.at(0.5 * (1 + t)).kappa, 0.0);
+    }
+  }
+}
+
+TEST(SCurve, RootMethodsAgree) {
+  const Points P{{{0, 0}, {1, 0}, {2, 1.5}, {3, 1}}};
+  SCurveOptions bis;
+  bis.root = RootMethod::bisection;
+  const auto a = solve_s_curve(P, -1.0), b = solve_s_curve(P, -1.0, bis);
+  ASSERT_EQ(a.status, Status::ok) << a.message;
+  ASSERT_EQ(b.status, Status::ok) << b.message;
+  EXPECT_NEAR(a.lambda, b.lambda, 1e-12 * a.lambda);
+  EXPECT_LT(a.iterations, b.iterations);  // toms748 needs fewer evaluations than bisection
+}
+
+TEST(SCurve, MirroredAndCShapedInputs) {
+  // Mirror image of an S: still S-shaped; mirrored flag set.
+  const Points S_down{{{0, 0}, {1, 0}, {2, -1}, {3, -1}}};
+  const auto s = solve_s_curve(S_down, -1.0);
+  ASSERT_EQ(s.status, Status::ok) << s.message;
+  EXPECT_EQ(s.shape, SCurveShape::s_shaped);
+  EXPECT_TRUE(s.mirrored);
+  expect_interpolates(s, S_down);
+  // C-shaped (Fig. 2(a)): the curve stays inside the tangent triangle, no inflection.
+  for (const Points& P :
+       {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}}) {
+    const auto c = solve_s_curve(P, -1.0);
+    ASSERT_EQ(c.status, Status::ok) << c.message;
+    EXPECT_EQ(c.shape, SCurveShape::c_shaped);
+    EXPECT_EQ(c.inflection_s, -1);
+    expect_interpolates(c, P);
+    for (double t : {0.1, 0.5, 0.9}) EXPECT_GT(c.at(t).kappa * c.at(0.5).kappa, 0) << t;
+  }
+}
+
+TEST(SCurve, BadInput) {
+  const Points good{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}};
+  auto expect_param = [](const Points& P, double alpha, const std::string& name) {
+    try {
+      solve_s_curve(P, alpha);
+      ADD_FAILURE() << "no InputError for " << name;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.parameter(), name) << e.what();
+    }
+  };
+  expect_param(good, 0.0, "alpha");
+  expect_param(good, 1.5, "alpha");
+  expect_param(good, NAN, "alpha");
+  expect_param(good, -7, "alpha");
+  expect_param(Points{{{0, 0}, {0, 0}, {2, 1}, {3, 1}}}, -1, "p1");
+  expect_param(Points{{{0, 0}, {1, 0}, {3, 1}, {3, 1}}}, -1, "p2");
+  expect_param(Points{{{0, 0}, {1, 0}, {1, 1}, {0, 0}}}, -1, "p3");
+  expect_param(Points{{{0, 0}, {1, NAN}, {2, 1}, {3, 1}}}, -1, "p1.y");
+  // Straight line: a status, not a NaN curve.
+  const auto line = solve_s_curve(Points{{{0, 0}, {1, 0}, {2, 0}, {3, 0}}}, -1.0);
+  EXPECT_EQ(line.status, Status::no_solution);
+  EXPECT_EQ(line.shape, SCurveShape::straight);
+}
+
+TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
+  // Segments with an inflection inside, at an end, just outside, and none.
+  struct Seg {
+    double alpha, qa, qb;
+  };
+  double worst = 0;
+  for (const Seg& s : {Seg{-1, 1, -2}, Seg{-0.5, 2, -1}, Seg{-2, 1, -1}, Seg{-5, 3, -0.2}, Seg{-0.9, 0, 2},
+                       Seg{-3, 0.05, 4}, Seg{-2, -3, -0.1}, Seg{0.5, 1, 3}, Seg{2, 0.3, 4}, Seg{1, 0.5, 2}}) {
+    for (double len : {0.25, 0.5, 2.0}) {
+      const detail::LaLaw law{s.alpha, 1.0};
+      const detail::LinearQSegment seg{0.1, 0.1 + len, s.qa, s.qb, 0.3};
+      const auto b = detail::integrate_tangent_reference(law, seg);
+      for (int panels : {1, 2}) {
+        long evals = 0;
+        const auto a = detail::integrate_tangent(law, seg, evals, panels);
+        const double e = std::abs(a - b) / len;
+        worst = std::max(worst, e);
+        EXPECT_LE(e, kQuadratureTol) << "alpha " << s.alpha << " q " << s.qa << ".." << s.qb << " len " << len
+                                     << " panels " << panels;
+      }
+    }
+  }
+  std::printf("worst graded Gauss-Legendre vs tanh-sinh (relative to length): %.3e\n", worst);
+}
+
+TEST(LinearQ, ReferenceToleranceIsNotTheAccuracyLimit) {
+  // The residual check's tanh-sinh at its default tolerance against the same rule at 1e-15, on the
+  // segments of solved G2 problems (random end data as bench_hermite; zeros of q inside, at and
+  // near segment ends) and S-curves: the default tolerance must not cost accuracy above 1e-14.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2), curvature(-3, 3);
+  double worst = 0;
+  int segments = 0;
+  auto compare = [&](const detail::LaLaw& law, const detail::LinearQSegment& seg) {
+    const auto a = detail::integrate_tangent_reference(law, seg);
+    const auto b = detail::integrate_tangent_reference(law, seg, 1e-15);
+    const double e = std::abs(a - b) / seg.length();
+    worst = std::max(worst, e);
+    ++segments;
+    EXPECT_LE(e, 1e-14) << "alpha " << law.alpha << " q " << seg.qa << ".." << seg.qb;
+  };
+  for (double alpha : {-0.5, -2.0, -4.0}) {
+    for (int i = 0; i < 40; ++i) {
+      const double t0 = angle(rng), k0 = curvature(rng), t1 = angle(rng), k1 = curvature(rng);
+      const G2Result r = solve_g2({{{0, 0}, t0, k0}, {{1, 0}, t1, k1}, alpha});
+      if (usable(r.status))
+        for (const auto& seg : r.curve.segments) compare(r.curve.law, seg);
+      const Points P{std::complex<double>(0, 0), std::polar(1.0 / 3, t0),
+                     std::complex<double>(1, 0) - std::polar(1.0 / 3, t1), std::complex<double>(1, 0)};
+      const SCurveResult c = solve_s_curve(P, alpha);
+      if (usable(c.status)) compare(c.law, c.standard);
+    }
+  }
+  EXPECT_GT(segments, 300);
+  std::printf("worst tanh-sinh at tolerance %g vs 1e-15 (relative to length, %d segments): %.3e\n",
+              detail::kReferenceTolerance, segments, worst);
+}
+
+TEST(LinearQ, DividedDifferenceIsTheArcLimit) {
+  for (double alpha : {-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 3.0}) {
+    const detail::LaLaw law{alpha, 1.0};
+    const double q = 1.7;
+    EXPECT_DOUBLE_EQ(law.divided_difference(q, q), law.kappa_of_q(q));
+    // Near-equal arguments: continuous with the exact value (no cancellation blow-up).
+    const double d = law.divided_difference(q, q * (1 + 1e-9));
+    EXPECT_NEAR(d, law.kappa_of_q(q * (1 + 0.5e-9)), 1e-14 * std::abs(d)) << alpha;
+  }
+}
+
+}  // namespace
+}  // namespace lac::hermite

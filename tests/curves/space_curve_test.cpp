@@ -1,0 +1,234 @@
+// LA space curve laws, Frenet–Serret integration and the cone event (curves/space).
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "lac/common/error.hpp"
+#include "lac/curves/space/frenet.hpp"
+#include "lac/curves/space/la_space_curve.hpp"
+#include "tests/support/space_tolerances.hpp"
+#include "tests/support/reference_csv.hpp"
+
+namespace lac {
+namespace {
+namespace tol = test::space_tol;
+
+// MATH.md §3 tables written out case by case (independent of the graph-law form in the library).
+double rho_table(double a, double l, double s) { return a == 0 ? std::exp(l * s) : std::pow(1 + a * l * s, 1 / a); }
+double mu_table(double b, double o, double nu, TorsionType ty, double s) {
+  const double sg = ty == TorsionType::type1 ? 1 : -1;
+  return b == 0 ? nu * std::exp(sg * o * s) : std::pow(sg * o * b * s + std::pow(nu, b), 1 / b);
+}
+
+struct LawCase {
+  double a, b, l, o, nu;
+  TorsionType ty;
+};
+const LawCase kLawCases[] = {{-1, -1, 0.8, 0.1, 1.5, TorsionType::type1}, {0, 2, 1, 0.3, 0.8, TorsionType::type2},
+                             {2, 1, 0.5, 0.6, 1, TorsionType::type1},     {1, 0, 0.7, 0.2, 1, TorsionType::type2},
+                             {0, 0, 1, 0.5, 2, TorsionType::type1},       {-0.5, 1.5, 2, 0.2, 0.7, TorsionType::type2},
+                             {0.5, -1, 0.3, 0.4, 1.2, TorsionType::type1}, {1, -2, 1.5, 0.3, 0.5, TorsionType::type2}};
+
+TEST(SpaceCurveLaws, RhoMuMatchTheTablesOfMathMd) {
+  double worst = 0;
+  for (const auto& c : kLawCases) {
+    const LaSpaceCurve cv(c.a, c.b, c.l, c.o, c.nu, c.ty);
+    const SRange r = cv.s_range();
+    const double hi = std::isfinite(r.hi) ? r.hi : 5.0;
+    for (int i = 0; i <= 20; ++i) {
+      const double s = 0.95 * hi * i / 20.0;
+      worst = std::max(worst, std::abs(cv.rho(s) / rho_table(c.a, c.l, s) - 1));
+      worst = std::max(worst, std::abs(cv.mu(s) / mu_table(c.b, c.o, c.nu, c.ty, s) - 1));
+    }
+  }
+  std::printf("worst relative deviation of rho, mu from the MATH.md tables: %.2e\n", worst);
+  EXPECT_LE(worst, tol::kLaw);
+}
+
+TEST(SpaceCurveLaws, RangeEndsWhereAFactorVanishes) {
+  // α = −0.5, Λ = 2: ρ = (1 − s)^(−2) ends at s = 1; type 2, β = 1.5: μ^β = ν^β − Ωβs ends at ν^β/(Ωβ).
+  const LaSpaceCurve a(-0.5, 0, 2, 0.2, 0.7, TorsionType::type2);
+  EXPECT_DOUBLE_EQ(a.s_range().hi, 1.0);
+  const LaSpaceCurve b(1, 1.5, 0.5, 0.2, 0.7, TorsionType::type2);
+  EXPECT_NEAR(b.s_range().hi, std::pow(0.7, 1.5) / (0.2 * 1.5), 1e-15);
+  EXPECT_NEAR(b.s_range().lo, -1 / 0.5, 1e-15);  // ρ = 1 + Λs
+  const LaSpaceCurve c(0, 0, 1, 0.5, 2, TorsionType::type1);
+  EXPECT_TRUE(std::isinf(c.s_range().lo) && std::isinf(c.s_range().hi));
+  // type 1 with β < 0: μ^β = ν^β + Ωβs decreases to 0 at s = ν^β/(Ω|β|)
+  const LaSpaceCurve d(1, -1, 1, 0.4, 1.2, TorsionType::type1);
+  EXPECT_NEAR(d.s_range().hi, std::pow(1.2, -1) / 0.4, 1e-15);
+}
+
+TEST(SpaceCurveLaws, TurningIsTheIntegralOfCurvatureAndInverts) {
+  double worst = 0, worst_inv = 0;
+  for (const auto& c : kLawCases) {
+    const LaSpaceCurve cv(c.a, c.b, c.l, c.o, c.nu, c.ty);
+    const double hi = std::isfinite(cv.s_range().hi) ? 0.9 * cv.s_range().hi : 3.0;
+    for (double s : {0.1 * hi, 0.5 * hi, hi}) {
+      const double q = boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double u) { return cv.kappa(u); }, 0, s, 12, 1e-14);
+      const double qt = boost::math::quadrature::gauss_kronrod<double, 31>::integrate([&](double u) { return cv.tau(u); }, 0, s, 12, 1e-14);
+      worst = std::max({worst, std::abs(cv.turning(s) / q - 1), std::abs(cv.torsion_turning(s) / qt - 1)});
+      worst_inv = std::max({worst_inv, std::abs(cv.s_at_turning(cv.turning(s)) / s - 1),
+                            std::abs(cv.s_at_torsion_turning(cv.torsion_turning(s)) / s - 1)});
+    }
+  }
+  std::printf("turning vs quadrature: %.2e, inverse round trip: %.2e\n", worst, worst_inv);
+  EXPECT_LE(worst, tol::kTurning);
+  EXPECT_LE(worst_inv, tol::kTurning);
+  // α < 1: the turning is bounded by 1/((1 − α)Λ); beyond it there is no s.
+  const LaSpaceCurve b(-1, 0, 0.5, 0.1, 1, TorsionType::type1);
+  EXPECT_TRUE(std::isinf(b.s_at_turning(1.01)));
+  EXPECT_TRUE(std::isfinite(b.s_at_turning(0.99)));
+}
+
+TEST(SpaceCurveLaws, JointContinuationKeepsRhoMuAndTheirSlopes) {
+  // MATH.md §3: ρ, μ and dρ/ds, dμ/ds continuous (LCG, LTG continuous), including α1 = 0, β1 = 0.
+  struct J {
+    double a0, a1, b0, b1;
+    TorsionType ty;
+  };
+  const J cases[] = {{-1, 1, -1, 1, TorsionType::type1}, {0, -1, 2, 1, TorsionType::type1},
+                     {1, 0, 0, 1, TorsionType::type2},   {1, -1, 1, -2, TorsionType::type2},
+                     {-1, 0, 2, 0, TorsionType::type1},  {2, 0.5, -1, 0, TorsionType::type2}};
+  double worst = 0;
+  for (const J& j : cases) {
+    const double l0 = 0.7, o0 = 0.3, nu0 = 1.3, s_b = 0.6;
+    const LaSpaceCurve c0(j.a0, j.b0, l0, o0, nu0, j.ty);
+    const double rc = c0.rho(s_b), mc = c0.mu(s_b);
+    const JointContinuation k = continue_at_joint(j.a0, j.a1, j.b0, j.b1, l0, o0, j.ty, rc, mc);
+    ASSERT_TRUE(k.valid);
+    EXPECT_NEAR(k.lambda1, l0 * std::pow(rc, j.a1 - j.a0), 1e-14 * k.lambda1);  // 000 Eq. (11)
+    EXPECT_NEAR(k.omega1, o0 * std::pow(mc, j.b1 - j.b0), 1e-14 * k.omega1);    // 000 Eq. (16)
+    const LaSpaceCurve c1(j.a1, j.b1, k.lambda1, k.omega1, k.nu1, j.ty);
+    auto d = [](auto f, double s) { return (f(s + 1e-5) - f(s - 1e-5)) / 2e-5; };
+    worst = std::max(worst, std::abs(c1.rho(k.s_c) / rc - 1));
+    worst = std::max(worst, std::abs(c1.mu(k.s_c) / mc - 1));
+    const double dr0 = d([&](double s) { return c0.rho(s); }, s_b), dr1 = d([&](double s) { return c1.rho(s); }, k.s_c);
+    const double dm0 = d([&](double s) { return c0.mu(s); }, s_b), dm1 = d([&](double s) { return c1.mu(s); }, k.s_c);
+    EXPECT_NEAR(dr1 / dr0, 1, 1e-8);
+    EXPECT_NEAR(dm1 / dm0, 1, 1e-8);
+  }
+  EXPECT_LE(worst, tol::kJointRelative);
+}
+
+struct RefRow {
+  LaSpaceCurve curve;
+  double s_end;
+  Frame3 frame;
+};
+
+std::vector<RefRow> reference_rows() {
+  const auto t = test::read_reference_csv("space_frenet.csv");
+  std::vector<RefRow> rows;
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    const auto n = [&](const char* c) { return t.number(i, c); };
+    const LaSpaceCurve c(n("alpha"), n("beta"), n("lambda"), n("omega"), n("nu"),
+                         n("type") == 1 ? TorsionType::type1 : TorsionType::type2);
+    Frame3 f{{n("px"), n("py"), n("pz")}, {n("tx"), n("ty"), n("tz")}, {n("nx"), n("ny"), n("nz")}, {n("bx"), n("by"), n("bz")}};
+    rows.push_back({c, n("s_end"), f});
+  }
+  return rows;
+}
+
+double frame_distance(const Frame3& a, const Frame3& b) {
+  return std::max({(a.p - b.p).cwiseAbs().maxCoeff(), (a.t - b.t).cwiseAbs().maxCoeff(),
+                   (a.n - b.n).cwiseAbs().maxCoeff(), (a.b - b.b).cwiseAbs().maxCoeff()});
+}
+
+TEST(Frenet, MatchesMpmathReferenceForEveryMethod) {
+  const auto rows = reference_rows();
+  ASSERT_GE(rows.size(), 8u);
+  struct M {
+    const char* name;
+    FrenetOptions opt;
+    double tolerance;
+  };
+  const M methods[] = {{"magnus6 rtol 1e-12", {FrenetMethod::magnus6, 1e-12, 1e-13}, tol::kMagnusTight},
+                       {"magnus6 rtol 1e-10", {FrenetMethod::magnus6, 1e-10, 1e-11}, tol::kMagnusDefault},
+                       {"rk45 rtol 1e-12", {FrenetMethod::rk45, 1e-12, 1e-13}, tol::kRk45},
+                       {"rk4 h 1e-3", {FrenetMethod::rk4, 1e-12, 1e-13, 1e-3}, tol::kRk4}};
+  for (const M& m : methods) {
+    double worst = 0, worst_orth = 0;
+    long evals = 0;
+    for (const auto& r : rows) {
+      const FrenetResult res = integrate_frenet(r.curve, Frame3{}, 0, r.s_end, m.opt);
+      ASSERT_EQ(res.status, Status::ok) << m.name << ": " << res.message;
+      worst = std::max(worst, frame_distance(res.frame, r.frame));
+      worst_orth = std::max(worst_orth, res.frame.orthonormality_error());
+      evals += res.evaluations;
+    }
+    std::printf("%-20s worst |frame - reference| %.2e, orthonormality %.1e, %ld evaluations over %zu curves\n", m.name,
+                worst, worst_orth, evals, rows.size());
+    EXPECT_LE(worst, m.tolerance) << m.name;
+    EXPECT_LE(worst_orth, tol::kOrthonormal) << m.name;
+  }
+}
+
+TEST(Frenet, ConeEventIsTheFirstMeetingAndIsLocatedAccurately) {
+  double worst = 0;
+  for (const auto& c : kLawCases) {
+    const LaSpaceCurve cv(c.a, c.b, c.l, c.o, c.nu, c.ty);
+    const double hi = std::isfinite(cv.s_range().hi) ? cv.s_range().hi * (1 - 1e-9) : 6.0;
+    for (double theta : {0.2, 0.5, 0.9}) {
+      for (FrenetMethod m : {FrenetMethod::magnus6, FrenetMethod::rk45, FrenetMethod::rk4}) {
+        FrenetOptions o{m, 1e-12, 1e-13, 1e-3};
+        const FrenetResult r = integrate_to_cone(cv, Frame3{}, 0, hi, theta, o);
+        if (!r.met_cone) continue;
+        worst = std::max(worst, std::abs(cone_angle_of(r.frame.p) - theta));
+        // first meeting: the angle stays below θ before the event (checked on a dense sample)
+        const auto frames = sample_frenet(cv, Frame3{}, 0, r.s, 200, o);
+        for (size_t i = 1; i + 1 < frames.size(); ++i) ASSERT_LT(cone_angle_of(frames[i].p), theta + 1e-12);
+      }
+    }
+  }
+  std::printf("worst |angle(P_event, e_x) - theta|: %.2e\n", worst);
+  EXPECT_LE(worst, tol::kConeAngle);
+}
+
+TEST(Frenet, FrameStaysOrthonormalOverLongIntegrations) {
+  const LaSpaceCurve cv(2, 1, 0.5, 0.6, 0.3, TorsionType::type1);  // strong torsion, several turns
+  double worst = 0;
+  for (FrenetMethod m : {FrenetMethod::magnus6, FrenetMethod::rk45, FrenetMethod::rk4}) {
+    FrenetOptions o{m, 1e-10, 1e-11, 1e-2};
+    for (const Frame3& f : sample_frenet(cv, Frame3{}, 0, 20, 400, o)) worst = std::max(worst, f.orthonormality_error());
+  }
+  std::printf("worst orthonormality error over s in [0, 20]: %.2e\n", worst);
+  EXPECT_LE(worst, tol::kOrthonormal);
+}
+
+TEST(SpaceCurveInput, InvalidParametersNameTheParameter) {
+  auto param = [](auto&& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return e.parameter();
+    }
+    return std::string("<no error>");
+  };
+  EXPECT_EQ(param([] { LaSpaceCurve(NAN, 0, 1, 1, 1, TorsionType::type1); }), "alpha");
+  EXPECT_EQ(param([] { LaSpaceCurve(0, INFINITY, 1, 1, 1, TorsionType::type1); }), "beta");
+  EXPECT_EQ(param([] { LaSpaceCurve(0, 0, -1, 1, 1, TorsionType::type1); }), "lambda");
+  EXPECT_EQ(param([] { LaSpaceCurve(0, 0, 1, -0.1, 1, TorsionType::type1); }), "omega");
+  EXPECT_EQ(param([] { LaSpaceCurve(0, 0, 1, 1, 0, TorsionType::type1); }), "nu");
+  EXPECT_EQ(param([] { LaSpaceCurve(0, 0, 1, 1, 1, static_cast<TorsionType>(3)); }), "type");
+  const LaSpaceCurve c(-1, 0, 1, 0.1, 1, TorsionType::type1);  // s < 1
+  EXPECT_EQ(param([&] { integrate_frenet(c, Frame3{}, 0, 1.5); }), "s1");
+  EXPECT_EQ(param([&] { integrate_to_cone(c, Frame3{}, 0, 0.5, 0.0); }), "cone_angle");
+  EXPECT_EQ(param([&] { integrate_frenet(c, Frame3{}, 0, 0.5, FrenetOptions{FrenetMethod::rk45, 0}); }), "rtol");
+  EXPECT_EQ(param([] { parse_frenet_method("euler"); }), "integrator");
+}
+
+TEST(Frenet, StepCapGivesAStatusNotAHang) {
+  const LaSpaceCurve c(0, 0, 1, 0, 1e-6, TorsionType::type1);  // τ = 1e6: far more steps than the cap
+  FrenetOptions o{FrenetMethod::rk45, 1e-12, 1e-13};
+  o.max_steps = 100;
+  const FrenetResult r = integrate_frenet(c, Frame3{}, 0, 1, o);
+  EXPECT_EQ(r.status, Status::max_iterations);
+  EXPECT_FALSE(r.message.empty());
+  EXPECT_TRUE(r.frame.p.allFinite());
+}
+
+}  // namespace
+}  // namespace lac
