@@ -14,7 +14,7 @@ namespace {
 // ∫_{t0}^{1} f(u(t)) u'(t) dt with u(t) = u0 + (e − u0)·t^p (p = 1: plain, p = 4: graded).
 template <class Phi>
 std::complex<double> graded(const Phi& phi, double u0, double e, double t0, int p, int panels, long& evaluations) {
-  const GaussLegendreRule& g = gauss_legendre_20();
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
   std::complex<double> sum{};
   // κ keeps its sign on a piece, so φ is monotonic there: one more panel per radian of turning.
   const double t0p = std::pow(t0, p);
@@ -51,7 +51,7 @@ const std::vector<double>& node_powers(double beta, int panels) {
   for (const Entry& e : cache)
     if (e.beta == beta && e.panels == panels) return e.values;
   Entry& e = cache[next++ % cache.size()];
-  const GaussLegendreRule& g = gauss_legendre_20();
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
   e.beta = beta;
   e.panels = panels;
   e.values.resize(20 * static_cast<size_t>(panels));
@@ -67,7 +67,7 @@ const std::vector<double>& node_powers(double beta, int panels) {
 // The same nodes and weights as graded(..., p = 4), without a power per node when t0 = 0.
 std::complex<double> graded_from_zero(double beta, double phi_zero, double delta, double u0, double e, double t0,
                                       int panels, long& evaluations) {
-  const GaussLegendreRule& g = gauss_legendre_20();
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
   const double turning = std::abs(delta) * (1.0 - std::pow(t0, beta));
   if (!(turning <= kMaxResolvedTurning)) return {NAN, NAN};
   panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
