@@ -141,7 +141,8 @@ TEST(FuzzRegression, OverflowingTriangleIsRejected) {
   const lac::ControlTriangle overflowing{{-DBL_MAX, 0}, {DBL_MAX, 0}, {DBL_MAX, 1}};  // a1 − a0 = inf
   const lac::ControlTriangle subnormal{{0, 0}, {1e-310, 0}, {2e-310, 1e-310}};
   for (const lac::ControlTriangle& t : {saved, overflowing, subnormal}) {
-    for (std::string_view name : lac::root_method_names()) {
+    for (const lac::RootMethodInfo& method : lac::root_methods()) {
+      const std::string_view name = method.name;
       lac::SegmentOptions o;
       o.solver = lac::parse_root_method(name);
       for (bool compound : {false, true}) {
