@@ -244,7 +244,7 @@ TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
   const lac::SpaceEndpoints ends{{a, a, a}, {31740, b, b}, {b, b, b}, {b, b, b}};
   const lac::G1SpaceSpec spec{1.000000000000001, 1e300, 0.0, lac::TorsionType::type2};
   lac::SpaceSegmentOptions o;
-  o.solver = lac::SpaceSolver::newton;
+  o.solver = lac::NonlinearMethod::newton;
   o.frenet.method = lac::FrenetMethod::rk4;
   const lac::SpaceSegmentResult r = lac::solve_g1_space_segment(ends, spec, o);
   EXPECT_EQ(r.status, lac::Status::max_iterations) << r.message;

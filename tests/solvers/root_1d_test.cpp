@@ -1,13 +1,13 @@
 // solvers/root_1d.hpp: every method on known roots, caps, statuses, option checks and the registry.
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
-
-#include <boost/math/tools/roots.hpp>
 #include <string>
 
 #include "lac/solvers/root_1d.hpp"
+#include "tests/support/solver_registry.hpp"
 
 namespace lac {
 namespace {
@@ -112,27 +112,8 @@ TEST(Root1d, InvalidInputThrows) {
 }
 
 TEST(Root1d, RegistryListsEveryMethodAndParsesEveryName) {
-  const auto list = root_methods();
-  ASSERT_EQ(list.size(), std::size(kAll));
-  for (size_t i = 0; i < list.size(); ++i) {
-    const RootMethodInfo& m = list[i];
-    EXPECT_EQ(m.method, kAll[i]);  // enum order
-    EXPECT_EQ(to_string(m.method), m.name);
-    EXPECT_EQ(parse_root_method(m.name), m.method);
-    for (std::string_view alias : m.aliases) EXPECT_EQ(parse_root_method(alias), m.method) << alias;
-    EXPECT_FALSE(m.description.empty());
-    EXPECT_FALSE(m.options.empty());
-  }
+  test::expect_complete_registry(root_methods(), std::span<const RootMethod>(kAll), parse_root_method, "regula");
   EXPECT_EQ(parse_root_method("newton"), RootMethod::secant);
-  try {
-    parse_root_method("regula");
-    FAIL() << "no exception";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.parameter(), "solver");
-    const std::string what = e.what();
-    for (const RootMethodInfo& m : list) EXPECT_NE(what.find(m.name), std::string::npos) << what;
-    EXPECT_NE(what.find("newton"), std::string::npos) << what;
-  }
 }
 
 // The bracket tolerance can be Boost.Math's eps_tolerance(50): |a − b| ≤ 2^-49·min(|a|, |b|).
