@@ -28,7 +28,7 @@ lac::SpaceSegmentResult solve(const lac::DrawableCase& c, const lac::SpaceSegmen
   return c.compound ? lac::solve_compound_space_segment(c.ends, c.spec, o) : lac::solve_g1_space_segment(c.ends, c.g1(), o);
 }
 
-void run_random(benchmark::State& state, bool compound, lac::SpaceSolver solver) {
+void run_random(benchmark::State& state, bool compound, lac::NonlinearMethod solver) {
   const auto& cases = random_cases(compound);
   lac::SpaceSegmentOptions o;
   o.solver = solver;
@@ -45,7 +45,7 @@ void run_random(benchmark::State& state, bool compound, lac::SpaceSolver solver)
   state.counters["constructions"] = static_cast<double>(constructions) / static_cast<double>(n);
 }
 
-void run_fig5a(benchmark::State& state, bool compound, lac::SpaceSolver solver) {
+void run_fig5a(benchmark::State& state, bool compound, lac::NonlinearMethod solver) {
   const lac::CompoundSpaceSpec spec{-1, 1, -1, 1, 0.1, 0.5, lac::TorsionType::type1};
   lac::Status st;
   const lac::SpaceEndpoints e = lac::drawable_endpoints(spec, compound, 0.2, 2.5, 1.2, &st);
@@ -63,15 +63,15 @@ void run_fig5a(benchmark::State& state, bool compound, lac::SpaceSolver solver) 
   state.counters["constructions"] = static_cast<double>(constructions) / static_cast<double>(std::max(1L, n));
 }
 
-void BM_g1_random_newton(benchmark::State& s) { run_random(s, false, lac::SpaceSolver::newton); }
-void BM_g1_random_ceres(benchmark::State& s) { run_random(s, false, lac::SpaceSolver::ceres); }
-void BM_g1_random_simplex(benchmark::State& s) { run_random(s, false, lac::SpaceSolver::simplex); }
-void BM_compound_random_newton(benchmark::State& s) { run_random(s, true, lac::SpaceSolver::newton); }
-void BM_compound_random_ceres(benchmark::State& s) { run_random(s, true, lac::SpaceSolver::ceres); }
-void BM_compound_random_simplex(benchmark::State& s) { run_random(s, true, lac::SpaceSolver::simplex); }
-void BM_g1_fig5a_newton(benchmark::State& s) { run_fig5a(s, false, lac::SpaceSolver::newton); }
-void BM_compound_fig5a_newton(benchmark::State& s) { run_fig5a(s, true, lac::SpaceSolver::newton); }
-void BM_compound_fig5a_simplex(benchmark::State& s) { run_fig5a(s, true, lac::SpaceSolver::simplex); }
+void BM_g1_random_newton(benchmark::State& s) { run_random(s, false, lac::NonlinearMethod::newton); }
+void BM_g1_random_ceres(benchmark::State& s) { run_random(s, false, lac::NonlinearMethod::ceres); }
+void BM_g1_random_simplex(benchmark::State& s) { run_random(s, false, lac::NonlinearMethod::simplex); }
+void BM_compound_random_newton(benchmark::State& s) { run_random(s, true, lac::NonlinearMethod::newton); }
+void BM_compound_random_ceres(benchmark::State& s) { run_random(s, true, lac::NonlinearMethod::ceres); }
+void BM_compound_random_simplex(benchmark::State& s) { run_random(s, true, lac::NonlinearMethod::simplex); }
+void BM_g1_fig5a_newton(benchmark::State& s) { run_fig5a(s, false, lac::NonlinearMethod::newton); }
+void BM_compound_fig5a_newton(benchmark::State& s) { run_fig5a(s, true, lac::NonlinearMethod::newton); }
+void BM_compound_fig5a_simplex(benchmark::State& s) { run_fig5a(s, true, lac::NonlinearMethod::simplex); }
 
 BENCHMARK(BM_g1_random_newton)->Unit(benchmark::kMillisecond)->Iterations(640);
 BENCHMARK(BM_g1_random_ceres)->Unit(benchmark::kMillisecond)->Iterations(192);

@@ -36,7 +36,7 @@ void run(const SpaceArgs& a) {
   const TorsionType type = a.type == 1 ? TorsionType::type1 : TorsionType::type2;
   const bool compound = a.alpha1 || a.beta1 || a.r_theta;
   SpaceSegmentOptions o;
-  o.solver = parse_space_solver(a.solver);
+  o.solver = parse_nonlinear_method(a.solver);
   o.frenet.method = parse_frenet_method(a.integrator);
   if (a.tol) o.frenet.rtol = *a.tol, o.frenet.atol = 0.1 * *a.tol;
   o.tangent_tolerance = a.tangent_tolerance;

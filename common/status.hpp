@@ -9,8 +9,12 @@ enum class Status {
   tolerance_not_met,  ///< finished within its caps but the error estimate exceeds the tolerance
   max_iterations,     ///< iteration or evaluation cap reached
   fell_back,          ///< primary method unusable here; result from the documented fallback
-  no_solution,        ///< the problem has no solution (e.g. no curve exists for this input)
+  no_solution,        ///< no solution exists: proven (the message says why) or a complete search found none
   numerical_failure,  ///< a non-finite intermediate value; result not usable
+  /// The solver stopped without converging and without reaching a cap (stalled, singular Jacobian,
+  /// no descent, converged to a point where r ≠ 0, no sign change found by a search that is not
+  /// complete); a solution may still exist.
+  not_converged,
 };
 
 constexpr std::string_view to_string(Status s) {
@@ -21,6 +25,7 @@ constexpr std::string_view to_string(Status s) {
     case Status::fell_back: return "fell_back";
     case Status::no_solution: return "no_solution";
     case Status::numerical_failure: return "numerical_failure";
+    case Status::not_converged: return "not_converged";
   }
   return "unknown";
 }

@@ -8,9 +8,7 @@
 #include <optional>
 
 #include "lac/common/error.hpp"
-#include "lac/solvers/least_squares_2d.hpp"
-#include "lac/solvers/newton_2d.hpp"
-#include "lac/solvers/simplex.hpp"
+#include "lac/solvers/nonlinear.hpp"
 
 namespace lac {
 namespace {
@@ -207,7 +205,7 @@ bool in_box(const Vec2& x) {
   return x[0] >= kLogLambdaMin && x[0] <= kLogLambdaMax && x[1] >= kLogNuMin && x[1] <= kLogNuMax;
 }
 
-SpaceSegmentResult to_result(const Problem& pb, const Trial& t, SpaceSolver solver) {
+SpaceSegmentResult to_result(const Problem& pb, const Trial& t, NonlinearMethod solver) {
   SpaceSegmentResult r;
   r.solver = solver;
   r.frenet = pb.opt->frenet;
@@ -252,7 +250,6 @@ struct RunOutcome {
 
 RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
   const SpaceSegmentOptions& o = *pb.opt;
-  RunOutcome out;
   auto trial = [&](const Vec2& x) -> std::optional<Trial> {
     if (!in_box(x) || ode_evals >= o.max_ode_evaluations) return std::nullopt;  // budget spent: undefined
     Trial t = construct(pb, std::exp(x[0]), std::exp(x[1]));
@@ -260,55 +257,33 @@ RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
     if (!t.defined) return std::nullopt;
     return t;
   };
-  switch (o.solver) {
-    case SpaceSolver::simplex: {
-      SimplexOptions so;
-      so.initial_step = 0.3;
-      so.value_target = o.tangent_tolerance;
-      so.x_tolerance = 1e-13;
-      so.max_evaluations = o.max_evaluations;
-      so.max_iterations = o.max_evaluations;
-      so.restarts = 3;
-      auto f = [&](const Vec2& x) -> std::optional<double> {
-        const auto t = trial(x);
-        if (!t) return std::nullopt;
-        return tangent_angle(t->end_tangent_local, pb.target);
-      };
-      const auto res = minimize_simplex<2>(f, x0, so);
-      out = {res.x, res.value <= o.tangent_tolerance, static_cast<int>(res.iterations), res.evaluations, res.message};
-      break;
-    }
-    case SpaceSolver::newton: {
-      NewtonOptions no;
-      no.residual_tolerance = o.tangent_tolerance;
-      no.max_evaluations = o.max_evaluations;
-      no.fd_step = 1e-7;
-      no.max_step = 1.5;
-      no.max_iterations = 25;  // converging runs need 4–8; a run this long is better restarted elsewhere
-      auto f = [&](const Vec2& x) -> std::optional<Vec2> {
-        const auto t = trial(x);
-        if (!t) return std::nullopt;
-        return stereographic_residual(pb, *t);
-      };
-      const auto res = solve_newton<2>(f, x0, no);
-      out = {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
-      break;
-    }
-    case SpaceSolver::ceres: {
-      LeastSquaresOptions lo;
-      lo.residual_tolerance = o.tangent_tolerance;
-      lo.max_iterations = 100;
-      auto f = [&](const Vec2& x) -> std::optional<Vec2> {
-        const auto t = trial(x);
-        if (!t) return std::nullopt;
-        return stereographic_residual(pb, *t);
-      };
-      const auto res = solve_least_squares<2, 2>(f, x0, lo);
-      out = {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
-      break;
-    }
-  }
-  return out;
+  NonlinearOptions so;
+  so.residual_tolerance = o.tangent_tolerance;  // simplex: on the end-tangent angle
+  so.simplex.initial_step = 0.3;
+  so.simplex.x_tolerance = 1e-13;
+  so.simplex.max_evaluations = o.max_evaluations;
+  so.simplex.max_iterations = static_cast<int>(std::min<long>(o.max_evaluations, std::numeric_limits<int>::max()));
+  so.simplex.restarts = 3;
+  so.simplex.merit = [&](ConstVectorMap x) -> std::optional<double> {
+    const auto t = trial(Vec2(x));
+    if (!t) return std::nullopt;
+    return tangent_angle(t->end_tangent_local, pb.target);
+  };
+  so.newton.max_evaluations = o.max_evaluations;
+  so.newton.fd_step = 1e-7;
+  so.newton.max_step = 1.5;
+  so.newton.max_iterations = 25;  // converging runs need 4–8; a run this long is better restarted elsewhere
+  so.ceres.max_iterations = 100;
+  const NonlinearResidual residual{2, [&](ConstVectorMap x, VectorMap r) {
+                                     const auto t = trial(Vec2(x));
+                                     if (!t) return false;
+                                     const auto s = stereographic_residual(pb, *t);
+                                     if (!s) return false;
+                                     r = *s;
+                                     return true;
+                                   }};
+  const NonlinearResult res = solve_nonlinear(o.solver, residual, x0, so);
+  return {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
 }
 
 SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec, bool compound,
@@ -428,22 +403,6 @@ SpaceSegmentResult construct_only(const char* who, const SpaceEndpoints& ends, c
 }
 
 }  // namespace
-
-SpaceSolver parse_space_solver(std::string_view name) {
-  if (name == "simplex") return SpaceSolver::simplex;
-  if (name == "ceres") return SpaceSolver::ceres;
-  if (name == "newton") return SpaceSolver::newton;
-  throw_input_error("parse_space_solver", "solver", "unknown name '" + std::string(name) + "' (simplex | ceres | newton)");
-}
-
-std::string_view to_string(SpaceSolver s) {
-  switch (s) {
-    case SpaceSolver::simplex: return "simplex";
-    case SpaceSolver::ceres: return "ceres";
-    case SpaceSolver::newton: return "newton";
-  }
-  return "unknown";
-}
 
 void SpaceSegmentOptions::validate() const {
   constexpr const char* who = "SpaceSegmentOptions";

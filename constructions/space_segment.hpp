@@ -8,9 +8,10 @@
 // (compound: segment 0 until the inner cone r_θ·θ, segment 1 — parameters from the LCG/LTG
 // continuity at the joint — until the outer cone), rotated about x into the xy plane and scaled
 // onto P1; so the position constraints hold for every (Λ0, ν0) and only the end tangent is solved:
-// two conditions in (log Λ0, log ν0). Solvers by name: "simplex" (000's modified downhill simplex
-// on the end-tangent angle), "ceres" (Levenberg–Marquardt), "newton" (damped Newton); the latter
-// two on the stereographic end-tangent residual 2 (t·u1, t·u2)/(1 + t·v̂1), zero only at t = v̂1.
+// two conditions in (log Λ0, log ν0). Solvers by name (solvers/nonlinear.hpp): "simplex" (000's
+// modified downhill simplex on the end-tangent angle), "ceres" (Levenberg–Marquardt), "newton"
+// (damped Newton); the latter two on the stereographic end-tangent residual
+// 2 (t·u1, t·u2)/(1 + t·v̂1), zero only at t = v̂1.
 //
 // The standard form has positive torsion (right-handed). With allow_mirror the mirror-image
 // problem (z → −z in the local frame) is tried as well; the result then has negative torsion.
@@ -22,13 +23,9 @@
 #include "lac/common/status.hpp"
 #include "lac/curves/space/frenet.hpp"
 #include "lac/curves/space/la_space_curve.hpp"
+#include "lac/solvers/nonlinear.hpp"
 
 namespace lac {
-
-enum class SpaceSolver { simplex, ceres, newton };
-/// "simplex" | "ceres" | "newton"; InputError naming "solver" otherwise.
-SpaceSolver parse_space_solver(std::string_view name);
-std::string_view to_string(SpaceSolver s);
 
 /// Endpoint data in user coordinates; v0, v1 are directions (any nonzero length).
 struct SpaceEndpoints {
@@ -51,7 +48,7 @@ struct CompoundSpaceSpec {
 };
 
 struct SpaceSegmentOptions {
-  SpaceSolver solver = SpaceSolver::newton;  ///< newton is the fastest here (see docs/space_curves.md)
+  NonlinearMethod solver = NonlinearMethod::newton;  ///< newton is the fastest here (see docs/space_curves.md)
   double tangent_tolerance = 1e-11;  ///< success: end-tangent angle error ≤ this (rad)
   /// Integration: order-6 Magnus, rtol 1e-10, atol 1e-11 (end tangents accurate to ~1e-13 rad,
   /// tests/space); rk45 / rk4 selectable.
@@ -85,7 +82,7 @@ struct SpacePiece {
 struct SpaceSegmentResult {
   Status status = Status::no_solution;
   std::string message;
-  SpaceSolver solver = SpaceSolver::newton;
+  NonlinearMethod solver = NonlinearMethod::newton;
   std::vector<SpacePiece> pieces;  ///< 1 (G1) or 2 (compound); empty when no curve was drawn
   double length = 0;               ///< user units
   double scale = 0;                ///< user length per standard-form length

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   const std::string cmd = lac::io::command_line(argc, argv);
 
   lac::SpaceSegmentOptions opt;
-  opt.solver = lac::SpaceSolver::simplex;  // 000's method
+  opt.solver = lac::NonlinearMethod::simplex;  // 000's method
 
   std::ofstream pts(std::filesystem::path(out) / "space_figures_points.csv");
   pts << "# written by: " << cmd << "\n";

@@ -39,7 +39,7 @@ double thread_cpu_seconds() {
 }
 
 struct Config {
-  lac::SpaceSolver solver;
+  lac::NonlinearMethod solver;
   lac::FrenetMethod integrator;
 };
 
@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  const std::vector<Config> configs = {{lac::SpaceSolver::simplex, lac::FrenetMethod::magnus6},
-                                       {lac::SpaceSolver::ceres, lac::FrenetMethod::magnus6},
-                                       {lac::SpaceSolver::newton, lac::FrenetMethod::magnus6},
-                                       {lac::SpaceSolver::newton, lac::FrenetMethod::rk45}};
+  const std::vector<Config> configs = {{lac::NonlinearMethod::simplex, lac::FrenetMethod::magnus6},
+                                       {lac::NonlinearMethod::ceres, lac::FrenetMethod::magnus6},
+                                       {lac::NonlinearMethod::newton, lac::FrenetMethod::magnus6},
+                                       {lac::NonlinearMethod::newton, lac::FrenetMethod::rk45}};
   lac::io::Table t;
   t.columns = {"segment", "solver", "integrator", "configurations", "success", "median ms", "p10 ms", "p90 ms",
                "median CPU ms", "median constructions", "median iterations", "worst tangent error (rad)", "000 (ms)",
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
         }
         progress.tick(++done);
       }
-      const bool paper_row = compound && cfg.solver == lac::SpaceSolver::simplex;
+      const bool paper_row = compound && cfg.solver == lac::NonlinearMethod::simplex;
       const double median_cpu = quantile(cpu_ms, 0.5);
       t.add_row({compound ? "compound" : "G1", std::string(lac::to_string(cfg.solver)), lac::to_string(cfg.integrator),
                  std::to_string(count), lac::io::fmt(100.0 * success / count, 4) + " %", lac::io::fmt(quantile(ms, 0.5), 3),

@@ -45,7 +45,7 @@ void check_samples(const std::string& what, const std::vector<SegmentSample>& pt
 
 int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   const uint8_t mode = in.byte();
-  const RootMethod solver = static_cast<RootMethod>(in.byte() % root_method_names().size());
+  const RootMethod solver = static_cast<RootMethod>(in.byte() % root_methods().size());
 
   if (mode % 4 == 3) {  // the root finders on f(x) = c0 + c1 x + c2 x² + c3 x³
     const double c0 = in.number(), c1 = in.number(), c2 = in.number(), c3 = in.number();

@@ -131,7 +131,8 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
         check_segment("construct", compound ? construct_compound_space_segment(ends, spec, lambda, nu, mirror, o)
                                             : construct_g1_space_segment(ends, g1, lambda, nu, mirror, o));
       });
-      o.solver = static_cast<SpaceSolver>(in.byte() % 3);
+      constexpr NonlinearMethod kSolvers[] = {NonlinearMethod::simplex, NonlinearMethod::ceres, NonlinearMethod::newton};
+      o.solver = kSolvers[in.byte() % 3];
       o.max_starts = in.int_in(0, 2);
       o.max_evaluations = in.int_in(5, 120);
       o.max_ode_evaluations = 10'000;  // ≤ ~0.05 s under the sanitizers with the last construction's overshoot

@@ -2,13 +2,25 @@
 #include "lac/solvers/root_1d.hpp"
 
 #include <array>
-#include <ceres/ceres.h>
+
+#include "lac/solvers/detail/ceres_support.hpp"
+#include "lac/solvers/detail/method_registry.hpp"
 
 namespace lac {
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kRootMethodNames = {"bisection", "secant", "toms748", "ceres"};
+constexpr std::array<std::string_view, 1> kSecantAliases = {"newton"};
+constexpr std::array<RootMethodInfo, 4> kRootMethods = {{
+    {RootMethod::bisection, "bisection", {}, "halves the bracket (001's method)", "x_rtol, x_atol, f_atol, max_iterations"},
+    {RootMethod::secant, "secant", kSecantAliases,
+     "secant steps kept inside the bracket, bisection when a step leaves it or the bracket stops shrinking",
+     "x_rtol, x_atol, f_atol, max_iterations"},
+    {RootMethod::toms748, "toms748", {}, "Boost.Math TOMS 748 (Alefeld-Potra-Shi)", "x_rtol, x_atol, f_atol, max_iterations"},
+    {RootMethod::ceres, "ceres", {},
+     "Ceres Solver Levenberg-Marquardt on f(x), bounded by the bracket, derivative by differences inside it",
+     "x_rtol (Ceres parameter tolerance), f_atol, max_iterations"},
+}};
 
 /// Residual r(x) = f(x) for Ceres with a finite-difference derivative that never leaves the
 /// bracket (central inside it, one-sided at its ends): f may be undefined outside. A non-finite
@@ -50,18 +62,13 @@ class BracketedResidual : public ceres::SizedCostFunction<1, 1> {
 
 }  // namespace
 
+std::span<const RootMethodInfo> root_methods() { return kRootMethods; }
+
 RootMethod parse_root_method(std::string_view name) {
-  if (name == "bisection") return RootMethod::bisection;
-  if (name == "secant" || name == "newton") return RootMethod::secant;
-  if (name == "toms748") return RootMethod::toms748;
-  if (name == "ceres") return RootMethod::ceres;
-  throw_input_error("parse_root_method", "solver",
-                    "unknown root finder '" + std::string(name) + "'; valid: bisection, secant (alias newton), toms748, ceres");
+  return detail::parse_solver_method(root_methods(), name, "parse_root_method", "root finder");
 }
 
-std::string_view to_string(RootMethod m) { return kRootMethodNames[static_cast<size_t>(m)]; }
-
-std::span<const std::string_view> root_method_names() { return kRootMethodNames; }
+std::string_view to_string(RootMethod m) { return detail::solver_method_name(root_methods(), m); }
 
 RootResult ceres_root(const std::function<double(double)>& f, const Bracket& b, const RootOptions& o) {
   RootResult r;
@@ -84,32 +91,22 @@ RootResult ceres_root(const std::function<double(double)>& f, const Bracket& b, 
   problem.SetParameterLowerBound(&x, 0, b.lo);
   problem.SetParameterUpperBound(&x, 0, b.hi);
 
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
+  ceres::Solver::Options options = detail::quiet_ceres_options();
   options.max_num_iterations = o.max_iterations;
   options.parameter_tolerance = std::max(o.x_rtol, 1e-300);
   options.function_tolerance = 1e-30;  // let the parameter tolerance or |f| decide
   options.gradient_tolerance = 1e-300;
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  options.num_threads = 1;
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
+  detail::solve_quietly(options, problem, summary);
 
   r.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
   r.root = t.best_x;
   r.residual = t.best_f;
   r.evaluations = ceres_evaluations;
-  const bool small = std::abs(r.residual) <= o.f_atol;
-  if (summary.termination_type == ceres::CONVERGENCE || small) {
-    r.status = Status::ok;
-  } else if (summary.termination_type == ceres::NO_CONVERGENCE) {
-    r.status = Status::max_iterations;
-    r.message = "ceres: " + summary.message;
-  } else {
-    r.status = Status::numerical_failure;
-    r.message = "ceres: " + summary.message;
-  }
+  // Ceres' convergence is its parameter tolerance x_rtol: the x tolerance of the other methods.
+  auto verdict = detail::ceres_verdict(summary, std::abs(r.residual) <= o.f_atol, true);
+  r.status = verdict.status;
+  r.message = std::move(verdict.message);
   return r;
 }
 

@@ -1,14 +1,16 @@
 #pragma once
-// One-dimensional root finding on a bracket [lo, hi] with f(lo)·f(hi) < 0, selectable by name:
+// One-dimensional root finding on a bracket [lo, hi] with f(lo)·f(hi) < 0, one registry
+// (root_methods(): name, aliases, description, options), selectable by name:
 //   bisection  halves the bracket (the method 001 uses for its similar-triangle search);
 //   secant     secant steps safeguarded by the bracket (bisection when a step leaves it or the
 //              bracket stops shrinking); alias "newton" (Newton with a secant derivative);
 //   toms748    Boost.Math tools::toms748_solve (Alefeld–Potra–Shi, cubic interpolation);
 //   ceres      Ceres Solver (Levenberg–Marquardt) on the residual f(x), bounded by the bracket.
 // Every method is capped by RootOptions::max_iterations and reports the x with the smallest
-// |f| it evaluated, the residual there, iterations, evaluations and a Status. Non-convergence
-// is a Status, never an exception; invalid options or a bracket without a sign change are too
-// (no_solution), only a malformed bracket (lo ≥ hi, NaN) throws InputError.
+// |f| it evaluated, the residual there, iterations, evaluations and a Status: ok, max_iterations
+// (the cap), numerical_failure (a non-finite f), not_converged (f has the same sign at both
+// bracket ends: the bracket proves nothing; ceres: a Ceres failure). Invalid options and a
+// malformed bracket (lo ≥ hi, NaN) throw InputError.
 //
 // Usage:
 //   auto f = [](double x) { return x * x - 2; };
@@ -26,19 +28,22 @@
 
 #include "lac/common/error.hpp"
 #include "lac/common/status.hpp"
+#include "lac/solvers/method_info.hpp"
 
 namespace lac {
 
 enum class RootMethod { bisection, secant, toms748, ceres };
 
-/// "bisection" | "secant" (alias "newton") | "toms748" | "ceres"; InputError otherwise.
+using RootMethodInfo = SolverMethodInfo<RootMethod>;
+/// The registry, one row per method in enum order.
+std::span<const RootMethodInfo> root_methods();
+/// A name or alias of root_methods(); InputError naming "solver" (listing the valid names) otherwise.
 RootMethod parse_root_method(std::string_view name);
 std::string_view to_string(RootMethod m);
-/// Canonical names in a stable order (aliases not listed).
-std::span<const std::string_view> root_method_names();
 
 struct RootOptions {
-  /// Stop when the bracket (or the last step) is narrower than x_atol + x_rtol·|x|.
+  /// Stop when the bracket [a, b] (or the last step) is narrower than x_atol + x_rtol·min(|a|, |b|)
+  /// (Boost.Math's eps_tolerance(bits) is x_atol = 0, x_rtol = max(2^(1−bits), 4·DBL_EPSILON)).
   double x_rtol = 2e-15;  ///< default: a few ulps
   double x_atol = 0;      ///< default: none (pure relative)
   /// Stop as soon as |f(x)| ≤ f_atol (0: only an exact zero stops early).
@@ -129,7 +134,7 @@ bool start(const Bracket& b, const RootOptions& o, RootTracker<F>& t, RootResult
   } else if (std::abs(b.f_lo) <= o.f_atol || std::abs(b.f_hi) <= o.f_atol) {
     r.status = Status::ok;  // a bracket end is already a root
   } else if ((b.f_lo > 0) == (b.f_hi > 0)) {
-    r.status = Status::no_solution;
+    r.status = Status::not_converged;  // no proof that f has no root in the bracket
     r.message = std::string(method) + ": f has the same sign at both bracket ends (" + format_number(b.f_lo) + ", " +
                 format_number(b.f_hi) + ")";
   } else {
@@ -157,7 +162,9 @@ void finish(RootTracker<F>& t, RootResult& r, bool converged, std::string_view m
 }  // namespace detail
 
 /// Bisection (001 §4). Written here rather than Boost's tools::bisect because that re-evaluates
-/// both ends, which callers of this header usually know already.
+/// both ends, which callers of this header usually know already. Same midpoints as tools::bisect;
+/// iterations count midpoints only (tools::bisect reports midpoints + 3 and caps midpoints at
+/// max_iter − 3), and no midpoint is evaluated once no double lies between the ends.
 template <class F>
 RootResult bisection(F&& f, const Bracket& b, const RootOptions& o = {}) {
   RootResult r;

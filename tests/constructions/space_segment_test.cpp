@@ -88,7 +88,7 @@ std::pair<double, double> graph_slopes(const std::vector<SpaceSample>& pts) {
 TEST(SpaceSegment, EverySolverMeetsTheEndConditionsOnDrawableCases) {
   for (bool compound : {false, true}) {
     const auto cs = cases(compound, 12, compound ? 11 : 7);
-    for (SpaceSolver solver : {SpaceSolver::newton, SpaceSolver::ceres, SpaceSolver::simplex}) {
+    for (NonlinearMethod solver : {NonlinearMethod::newton, NonlinearMethod::ceres, NonlinearMethod::simplex}) {
       SpaceSegmentOptions o;
       o.solver = solver;
       int ok = 0;
@@ -223,7 +223,7 @@ TEST(SpaceSegment, UndrawableConfigurationGivesAStatusNotAnException) {
   // Planar data (v1 in the plane of v0 and P1 − P0) would need zero torsion: ν → ∞, outside the
   // solver's box. Expect a Status other than ok, no NaN, and a message.
   SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(1, 1, 0), Vec3(-1, 0.2, 0)};
-  for (SpaceSolver s : {SpaceSolver::newton, SpaceSolver::ceres, SpaceSolver::simplex}) {
+  for (NonlinearMethod s : {NonlinearMethod::newton, NonlinearMethod::ceres, NonlinearMethod::simplex}) {
     SpaceSegmentOptions o;
     o.solver = s;
     o.max_starts = 3;
@@ -274,7 +274,7 @@ TEST(SpaceSegment, BadInputNamesTheParameter) {
   bad = k;
   bad.omega0 = NAN;
   EXPECT_EQ(param([&] { solve_compound_space_segment(good, bad); }), "omega0");
-  EXPECT_EQ(param([] { parse_space_solver("bfgs"); }), "solver");
+  EXPECT_EQ(param([] { parse_nonlinear_method("bfgs"); }), "solver");
   SpaceSegmentOptions o;
   o.tangent_tolerance = 0;
   EXPECT_EQ(param([&] { solve_g1_space_segment(good, g, o); }), "tangent_tolerance");

@@ -141,7 +141,8 @@ TEST(FuzzRegression, OverflowingTriangleIsRejected) {
   const lac::ControlTriangle overflowing{{-DBL_MAX, 0}, {DBL_MAX, 0}, {DBL_MAX, 1}};  // a1 − a0 = inf
   const lac::ControlTriangle subnormal{{0, 0}, {1e-310, 0}, {2e-310, 1e-310}};
   for (const lac::ControlTriangle& t : {saved, overflowing, subnormal}) {
-    for (std::string_view name : lac::root_method_names()) {
+    for (const lac::RootMethodInfo& method : lac::root_methods()) {
+      const std::string_view name = method.name;
       lac::SegmentOptions o;
       o.solver = lac::parse_root_method(name);
       for (bool compound : {false, true}) {
@@ -243,7 +244,7 @@ TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
   const lac::SpaceEndpoints ends{{a, a, a}, {31740, b, b}, {b, b, b}, {b, b, b}};
   const lac::G1SpaceSpec spec{1.000000000000001, 1e300, 0.0, lac::TorsionType::type2};
   lac::SpaceSegmentOptions o;
-  o.solver = lac::SpaceSolver::newton;
+  o.solver = lac::NonlinearMethod::newton;
   o.frenet.method = lac::FrenetMethod::rk4;
   const lac::SpaceSegmentResult r = lac::solve_g1_space_segment(ends, spec, o);
   EXPECT_EQ(r.status, lac::Status::max_iterations) << r.message;

@@ -1,10 +1,13 @@
-// solvers/root_1d.hpp: every method on known roots, caps, statuses and option checks.
+// solvers/root_1d.hpp: every method on known roots, caps, statuses, option checks and the registry.
 #include <gtest/gtest.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "lac/solvers/root_1d.hpp"
+#include "tests/support/solver_registry.hpp"
 
 namespace lac {
 namespace {
@@ -45,11 +48,17 @@ TEST(Root1d, EveryMethodFindsKnownRoots) {
   }
 }
 
-TEST(Root1d, NoSignChangeIsNoSolution) {
+// The same sign at both ends proves nothing about roots inside (x² − 0.25 has two in [−1, 1]).
+TEST(Root1d, NoSignChangeIsNotConverged) {
   auto f = [](double x) { return x * x + 1; };
+  auto g = [](double x) { return x * x - 0.25; };
   for (RootMethod m : kAll) {
-    const RootResult r = find_root(m, f, make_bracket(f, -1.0, 1.0));
-    EXPECT_EQ(r.status, Status::no_solution) << to_string(m);
+    RootResult r = find_root(m, f, make_bracket(f, -1.0, 1.0));
+    EXPECT_EQ(r.status, Status::not_converged) << to_string(m);
+    EXPECT_FALSE(r.message.empty());
+    EXPECT_EQ(r.evaluations, 0);
+    r = find_root(m, g, make_bracket(g, -1.0, 1.0));
+    EXPECT_EQ(r.status, Status::not_converged) << to_string(m);
     EXPECT_FALSE(r.message.empty());
     EXPECT_EQ(r.evaluations, 0);
   }
@@ -100,8 +109,42 @@ TEST(Root1d, InvalidInputThrows) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.parameter(), "solver");
   }
+}
+
+TEST(Root1d, RegistryListsEveryMethodAndParsesEveryName) {
+  test::expect_complete_registry(root_methods(), std::span<const RootMethod>(kAll), parse_root_method, "regula");
   EXPECT_EQ(parse_root_method("newton"), RootMethod::secant);
-  for (auto name : root_method_names()) EXPECT_EQ(to_string(parse_root_method(name)), name);
+}
+
+// The bracket tolerance can be Boost.Math's eps_tolerance(50): |a − b| ≤ 2^-49·min(|a|, |b|).
+// Same midpoints as tools::bisect, which reports 3 more iterations (2 more when the last midpoint
+// is an exact root: it leaves its loop before counting it).
+TEST(Root1d, BisectionMatchesBoostBisectWithEpsTolerance) {
+  double (*const functions[])(double) = {[](double x) { return std::cos(x) - x; }, [](double x) { return x * x - 2; },
+                                         [](double x) { return std::exp(x) - 3; }};
+  for (auto f : functions) {
+    RootOptions o;
+    o.x_rtol = std::ldexp(1.0, -49);
+    o.x_atol = 0;
+    o.max_iterations = 200 - 3;
+    const RootResult r = bisection(f, make_bracket(f, 0.1, 2.0), o);
+    boost::uintmax_t iterations = 200;
+    const auto ends = boost::math::tools::bisect(f, 0.1, 2.0, boost::math::tools::eps_tolerance<double>(50), iterations);
+    EXPECT_EQ(r.status, Status::ok);
+    EXPECT_EQ(r.lo, ends.first);
+    EXPECT_EQ(r.hi, ends.second);
+    const bool exact_root = r.residual == 0;
+    EXPECT_EQ(static_cast<boost::uintmax_t>(r.iterations) + (exact_root ? 2 : 3), iterations);
+  }
+}
+
+TEST(Root1d, CeresCapIsMaxIterations) {
+  auto f = [](double x) { return std::tanh(50 * (x - 0.3)); };
+  RootOptions o;
+  o.max_iterations = 2;
+  const RootResult r = ceres_root(f, make_bracket(f, -1.0, 2.0), o);
+  EXPECT_EQ(r.status, Status::max_iterations) << r.message;
+  EXPECT_EQ(r.message.rfind("ceres: ", 0), 0u) << r.message;
 }
 
 }  // namespace
