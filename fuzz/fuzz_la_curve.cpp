@@ -1,11 +1,11 @@
 // libFuzzer target: the planar LA curve (curves/planar) fed arbitrary doubles — constructor,
 // closed-form conversions, frame_at, position_at and polyline with every integrator by name
-// (rk4, rk45, gauss-kronrod, igf) and every form — and the igf closed form directly.
+// (every method of the quadrature registry) and every form — and the igf closed form directly.
 // Properties: see fuzz/fuzz_support.hpp.
 #include <algorithm>
 #include <string>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace lac;
@@ -64,15 +64,15 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   guarded(at + " frame_at", [&] { check_point("frame_at", c.frame_at(p, t)); });
 
   // Positions with an integrator chosen by name and options from the input.
-  const auto names = la_integrator_names();
-  const std::string_view name = names[in.byte() % names.size()];
-  IntegratorOptions options;
+  const auto methods = quadrature_methods();
+  const std::string_view name = methods[in.byte() % methods.size()].name;
+  QuadratureOptions options;
   const uint8_t option_bits = in.byte();
   if (option_bits & 1) options.h = in.number();
   if (option_bits & 2) options.tol = in.number();
   const Form form = option_bits & 4 ? Form::theta : option_bits & 8 ? Form::s : Form::automatic;
-  LaIntegrator method;
-  if (!guarded(std::string(name) + " options", [&] { method = make_la_integrator(name, options); })) return 0;
+  AnyQuadrature method;
+  if (!guarded(std::string(name) + " options", [&] { method = make_quadrature(name, options); })) return 0;
 
   // Budgets 40 times below the defaults: budget exhaustion is what is checked, and a long
   // integration at the default budget (up to 8.4·10^5 GK evaluations) would hold the 10^6-execution

@@ -1,7 +1,7 @@
 #pragma once
 // Position on a standard-form planar LA curve (MATH.md §1; 002 Eqs. 7–8) with any
 // quadrature method of integrators/quadrature.hpp, or with a closed form (igf) that
-// satisfies LaClosedForm.
+// satisfies LaClosedForm; or chosen at run time (AnyQuadrature, integrators/registry.hpp).
 //   θ-form: C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ     s-form: C(s) = ∫₀^s e^{iθ(u)} du
 #include <algorithm>
 #include <cmath>
@@ -17,6 +17,7 @@
 #include "lac/common/status.hpp"
 #include "lac/curves/planar/la_curve.hpp"
 #include "lac/integrators/quadrature.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 
@@ -28,10 +29,10 @@ constexpr std::string_view to_string(Form f) {
 }
 Form parse_form(std::string_view text);  // "theta" | "s" | "auto"; InputError otherwise
 
-/// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve.
+/// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve (α, Λ), e.g. Igf.
 template <class M>
-concept LaClosedForm = requires(const M& m, const LaCurve& c) {
-  { m.integrate_theta(c, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
+concept LaClosedForm = requires(const M& m, double alpha, double lambda) {
+  { m.integrate_theta(alpha, lambda, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
   { m.validate() };
   { M::name } -> std::convertible_to<std::string_view>;
 };
@@ -184,7 +185,8 @@ template <class M>
 IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& m, Form form, double a, double b) {
   IntegralResult<std::complex<double>> r;
   if constexpr (LaClosedForm<M>) {
-    r = form == Form::s ? m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b)) : m.integrate_theta(c, a, b);
+    r = form == Form::s ? m.integrate_theta(c.alpha(), c.lambda(), c.theta_at_s(a), c.theta_at_s(b))
+                        : m.integrate_theta(c.alpha(), c.lambda(), a, b);
   } else if constexpr (std::same_as<M, Rk4>) {
     Rk4Sweep<std::complex<double>> sweep(m);
     sweep.reserve(b - a);
@@ -389,5 +391,11 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   }
   return out;
 }
+
+/// Run-time choice of the method (make_quadrature by name): one dispatch, then the templates above.
+PositionResult position_at(const LaCurve& c, Parameter p, double t, const AnyQuadrature& method,
+                           Form form = Form::automatic);
+std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n,
+                                     const AnyQuadrature& method, Form form = Form::automatic);
 
 }  // namespace lac

@@ -101,7 +101,8 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
 /// θ leaves the double range on the way (docs/quadratic.md).
 std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n);
 
-/// Run-time choice of the quadrature method (make_quadrature by name).
+/// Run-time choice of the quadrature method (make_quadrature by name). InputError naming
+/// "integrator" for igf, a closed form of the planar LA curve in standard form only.
 PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
 

@@ -31,7 +31,7 @@ TEST(QuadraticPosition, RegistryMethodsAgree) {
   for (const auto& p : sets) {
     const QuadraticLaCurve c(p[0], p[1], p[2]);
     const auto ref = polyline(c, -0.2, 0.5, 8, make_quadrature("gauss-kronrod", {{}, 1e-14}));
-    for (const auto& [name, opts] : {std::pair{"rk4", IntegratorOptions{1e-3, {}}}, std::pair{"rk45", IntegratorOptions{{}, 1e-12}}}) {
+    for (const auto& [name, opts] : {std::pair{"rk4", QuadratureOptions{1e-3, {}}}, std::pair{"rk45", QuadratureOptions{{}, 1e-12}}}) {
       const auto got = polyline(c, -0.2, 0.5, 8, make_quadrature(name, opts));
       for (size_t k = 0; k < got.size(); ++k) {
         EXPECT_LE(std::abs(got[k].point.position - ref[k].point.position), kMethodAgreement) << name << " k=" << k;

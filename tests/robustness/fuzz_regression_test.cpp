@@ -12,7 +12,7 @@
 
 #include "lac/common/error.hpp"
 #include "tests/support/run_cli.hpp"
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/space/frenet.hpp"
 #include "lac/curves/space/la_space_curve.hpp"
 #include "lac/constructions/triangle_g1.hpp"
