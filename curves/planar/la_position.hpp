@@ -161,10 +161,12 @@ void for_each_subpiece(const LaCurve& c, Form form, double a, double b, Visit&& 
 
 /// Evaluation budget of one position call made of several quadrature calls (a call that turns
 /// more than kMaxTurningPerPiece): the method's own per-call budget, so that up to 10^6 pieces
-/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces.
+/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces. A method without
+/// a budget of its own (GaussLegendre: fixed cost per call; GkTanhSinh: bounded depth and levels)
+/// gets Gauss–Kronrod's default one.
 template <class M>
 long evaluation_budget(const M&) {
-  return std::numeric_limits<long>::max();
+  return 21 * (2 * GaussKronrod{}.max_intervals + 1);
 }
 inline long evaluation_budget(const Rk45& m) { return 6 * m.max_steps + 1; }
 inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_intervals + 1); }
@@ -175,8 +177,7 @@ inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_in
 template <class M>
 long polyline_budget(const M& m, long n) {
   if constexpr (requires { m.max_pieces; }) return 10 * m.max_pieces + 1000 * n;
-  const long base = evaluation_budget(m);
-  return base == std::numeric_limits<long>::max() ? base : base + 64 * 21 * n;
+  return evaluation_budget(m) + 64 * 21 * n;
 }
 
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
