@@ -45,6 +45,32 @@ TEST(QuadraticPosition, RegistryMethodsAgree) {
   }
 }
 
+// Every method of the quadrature registry at its defaults; igf, a closed form of the planar LA
+// curve only, is an InputError naming the integrator.
+TEST(QuadraticPosition, EveryRegisteredQuadratureAgreesAndIgfIsRejected) {
+  const QuadraticLaCurve c(1, 1, 1);
+  const auto ref = polyline(c, -0.2, 0.5, 8, GaussKronrod{});
+  for (const MethodInfo& m : quadrature_methods()) {
+    const AnyQuadrature method = make_quadrature(m.name);
+    if (m.applies_to != kAnyIntegrand) {
+      try {
+        polyline(c, -0.2, 0.5, 8, method);
+        ADD_FAILURE() << m.name << " accepted";
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.parameter(), "integrator");
+        EXPECT_NE(std::string(e.what()).find("planar LA curves in standard form only"), std::string::npos) << e.what();
+      }
+      EXPECT_THROW(position_at(c, 0.5, method), InputError);
+      continue;
+    }
+    const auto got = polyline(c, -0.2, 0.5, 8, method);
+    for (size_t k = 0; k < got.size(); ++k) {
+      EXPECT_LE(std::abs(got[k].point.position - ref[k].point.position), kMethodAgreement) << m.name << " k=" << k;
+      EXPECT_EQ(got[k].status, Status::ok) << m.name;
+    }
+  }
+}
+
 TEST(QuadraticPosition, GammaToZeroGivesTheLaCurvesPositions) {
   GaussKronrod gk;
   for (double alpha : {-1.0, 0.0, 2.0}) {
