@@ -1,4 +1,4 @@
-// The igf closed form (integrators/igf.hpp, curves/planar/la_igf.hpp) against mpmath references:
+// The igf closed form (integrators/igf.hpp) against mpmath references:
 // tests/reference/igf_reference.csv (generator igf_reference.py: differences C(θ1) − C(θ0),
 // small steps, every α incl. near 1) and, when present, the project's la_reference.csv.
 #include <gtest/gtest.h>
