@@ -6,6 +6,7 @@
 #include <complex>
 #include <set>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "lac/common/error.hpp"
@@ -19,23 +20,17 @@ namespace {
 
 using cplx = std::complex<double>;
 
-std::string parameter_of(auto&& call) {
+// The InputError `call` throws: its parameter and message ("(no InputError)" for none).
+std::pair<std::string, std::string> input_error_of(auto&& call) {
   try {
     call();
   } catch (const InputError& e) {
-    return e.parameter();
+    return {e.parameter(), e.what()};
   }
-  return "(no InputError)";
+  return {"(no InputError)", "(no InputError)"};
 }
-
-std::string message_of(auto&& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+std::string parameter_of(auto&& call) { return input_error_of(call).first; }
+std::string message_of(auto&& call) { return input_error_of(call).second; }
 
 // Accuracy each method reaches at its defaults on the smooth integrands below, relative to the
 // integral: its tolerance where it has one (rk45's is per unit length, whence the margin), and
