@@ -59,13 +59,17 @@ struct PositionResult {
 
 namespace detail {
 
+// Always inlined: in a unit that instantiates every registered method (the run-time dispatch),
+// GCC's growth limits otherwise leave them out of line in the adaptive methods' inner loops.
 struct ThetaFormIntegrand {
   const LaCurve* c;
-  std::complex<double> operator()(double psi) const { return std::polar(std::exp(c->log_rho_at_theta_unchecked(psi)), psi); }
+  [[gnu::always_inline]] std::complex<double> operator()(double psi) const {
+    return std::polar(std::exp(c->log_rho_at_theta_unchecked(psi)), psi);
+  }
 };
 struct SFormIntegrand {
   const LaCurve* c;
-  std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
+  [[gnu::always_inline]] std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
 };
 
 /// e^{iψ} for a run of nearby angles, as an RK4 sweep asks for them: one sincos at a base angle,

@@ -19,9 +19,9 @@
 namespace lac {
 
 namespace detail {
-struct QuadraticSFormIntegrand {
+struct QuadraticSFormIntegrand {  // always inlined: see ThetaFormIntegrand (la_position.hpp)
   const QuadraticLaCurve* curve;
-  std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
+  [[gnu::always_inline]] std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
 };
 }  // namespace detail
 
