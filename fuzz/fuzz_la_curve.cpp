@@ -70,6 +70,7 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   const uint8_t option_bits = in.byte();
   if (option_bits & 1) options.h = in.number();
   if (option_bits & 2) options.tol = in.number();
+  if (option_bits & 16) options.panels = in.int_in(-1, 100);
   const Form form = option_bits & 4 ? Form::theta : option_bits & 8 ? Form::s : Form::automatic;
   AnyQuadrature method;
   if (!guarded(std::string(name) + " options", [&] { method = make_quadrature(name, options); })) return 0;
@@ -83,8 +84,12 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   const double t1 = in.number();
   const int n = in.int_in(2, 40);
   // rk4 runs |Δ|/h steps, capped at 5·10^6 (seconds under the sanitizers): keep the fuzzer to
-  // problems of at most 10^6 steps so that its time bound catches real hangs only.
-  if (const Rk4* rk4 = std::get_if<Rk4>(&method)) {
+  // problems of at most 10^6 steps so that its time bound catches real hangs only. gauss-legendre
+  // and gk-tanh-sinh have no budget of their own to lower (a call stops at Gauss–Kronrod's default
+  // 8.4·10^5 evaluations): keep them to at most 64 pieces of 64 rad.
+  const Rk4* rk4 = std::get_if<Rk4>(&method);
+  const bool default_budget = std::holds_alternative<GaussLegendre>(method) || std::holds_alternative<GkTanhSinh>(method);
+  if (rk4 || default_budget) {
     double span = 0;
     for (double end : {t, t1}) {
       try {
@@ -93,7 +98,8 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
       } catch (const InputError&) {  // position_at throws the same error quickly
       }
     }
-    if (!(span / rk4->h <= 1e6)) return 0;
+    if (rk4 && !(span / rk4->h <= 1e6)) return 0;
+    if (default_budget && !(span <= 64.0 * lac::detail::kMaxTurningPerPiece)) return 0;
   }
   const std::string call = curve_text + " " + std::string(name) + " form " + std::string(to_string(form)) +
                            (p == Parameter::s ? " s " : " theta ");
