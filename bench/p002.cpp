@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "experiments/p002_data.hpp"
 #include "lac/integrators/ode.hpp"
 
@@ -28,7 +28,7 @@ namespace {
 struct BenchMethod {
   std::string label;
   std::string name;
-  lac::IntegratorOptions options;
+  lac::QuadratureOptions options;
 };
 
 std::vector<BenchMethod> bench_methods() {
@@ -37,12 +37,11 @@ std::vector<BenchMethod> bench_methods() {
                                 {"gauss-kronrod_tol=1e-8", "gauss-kronrod", {std::nullopt, 1e-8}},
                                 {"gauss-kronrod_tol=1e-6", "gauss-kronrod", {std::nullopt, 1e-6}},
                                 {"rk45_tol=1e-12", "rk45", {}}};
-  for (auto name : lac::la_integrator_names())
-    if (name == "igf") m.push_back({"igf", "igf", {}});
+  m.push_back({"igf", "igf", {}});
   return m;
 }
 
-void endpoint(benchmark::State& state, lac::p002::ReferenceEnd ref, lac::LaIntegrator method) {
+void endpoint(benchmark::State& state, lac::p002::ReferenceEnd ref, lac::AnyQuadrature method) {
   const lac::LaCurve curve(ref.alpha, ref.lambda);
   lac::PositionResult r;
   for (auto _ : state) {
@@ -120,7 +119,7 @@ void segment_frames(benchmark::State& state, lac::p002::ReferenceEnd ref) {
 const bool registered = [] {
   const auto rows = lac::p002::reference_set(lac::p002::read_reference(), "appendix_a");
   for (const auto& bm : bench_methods()) {
-    const lac::LaIntegrator method = lac::make_la_integrator(bm.name, bm.options);
+    const lac::AnyQuadrature method = lac::make_quadrature(bm.name, bm.options);
     for (const auto& ref : rows) {
       const std::string label = "Endpoint/" + bm.label + "/alpha=" + ref.alpha_text + "/Lambda=" + lac::format_number(ref.lambda);
       benchmark::RegisterBenchmark(label.c_str(), endpoint, ref, method)->Unit(benchmark::kMicrosecond)->MinTime(0.05);

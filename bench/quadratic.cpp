@@ -57,8 +57,8 @@ void BM_Polyline1000(benchmark::State& state) {
   const auto d = c.s_domain();
   const double s0 = std::isfinite(d.lo) ? 0.99 * d.lo : -3.0, s1 = std::isfinite(d.hi) ? 0.99 * d.hi : 3.0;
   const auto method = lac::make_quadrature(state.range(1) == 0 ? "rk4" : "gauss-kronrod",
-                                           state.range(1) == 0 ? lac::IntegratorOptions{(s1 - s0) / 999, {}}
-                                                               : lac::IntegratorOptions{{}, 1e-10});
+                                           state.range(1) == 0 ? lac::QuadratureOptions{(s1 - s0) / 999, {}}
+                                                               : lac::QuadratureOptions{{}, 1e-10});
   for (auto _ : state) {
     benchmark::DoNotOptimize(lac::polyline(c, s0, s1, 1000, method));
   }

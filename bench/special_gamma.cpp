@@ -6,7 +6,7 @@
 
 #include <complex>
 
-#include "lac/curves/planar/la_igf.hpp"
+#include "lac/integrators/igf.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/integrators/igf.hpp"
 #include "lac/special/incomplete_gamma.hpp"

@@ -4,7 +4,8 @@
 #include <optional>
 
 #include "cli/command.hpp"
-#include "lac/curves/planar/la_integrator.hpp"
+#include "cli/quadrature_args.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "io/timing.hpp"
 
 namespace lac::cli {
@@ -14,8 +15,7 @@ struct EvalArgs {
   double alpha = 0, lambda = 0;
   std::optional<double> theta, s;
   std::string form = "auto";
-  std::string integrator = "gauss-kronrod";
-  std::optional<double> h, tol;
+  QuadratureArgs quadrature{.integrator = "gauss-kronrod"};
   int points = 1;
   std::string* format = nullptr;
 };
@@ -33,7 +33,7 @@ void run(const EvalArgs& a) {
   const double t = a.theta ? *a.theta : *a.s;
   curve.check(p, t, p == Parameter::theta ? "theta" : "s");
   const Form form = parse_form(a.form);
-  const LaIntegrator method = make_la_integrator(a.integrator, IntegratorOptions{a.h, a.tol});
+  const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   if (a.points < 1 || a.points > 1'000'000) throw_input_error("lac eval", "points", a.points, "[1, 1000000]");
   io::Stopwatch clock;
   std::vector<PositionResult> results;
@@ -77,9 +77,7 @@ void setup(CLI::App& app) {
   th->excludes(so);
   so->excludes(th);
   sub->add_option("--form", a->form, "Position integral: theta | s | auto")->capture_default_str();
-  sub->add_option("--integrator", a->integrator, "rk4 | rk45 | gauss-kronrod | igf")->capture_default_str();
-  sub->add_option("--h", a->h, "rk4 step in the integration variable (default 0.001)");
-  sub->add_option("--tol", a->tol, "Tolerance of rk45 (default 1e-12), gauss-kronrod (1e-14) or igf (2.5e-13)");
+  add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--points", a->points, "Number of points from the reference point (0) to the given theta/s")->capture_default_str();
   a->format = add_format_option(*sub, {"json", "csv", "table"});
   sub->callback([a, th, so] {

@@ -14,9 +14,7 @@ namespace lac::cli {
 void add_segment_options(CLI::App& sub, SegmentArgs& a) {
   sub.add_option("--points", a.points, "Control points \"x0,y0 x1,y1 x2,y2\": start, tangent intersection, end")->required();
   sub.add_option("--solver", a.solver, "Root finder: bisection | secant (newton) | toms748 | ceres")->capture_default_str();
-  sub.add_option("--integrator", a.integrator, "Positions: auto (Gauss-Kronrod, tanh-sinh near singular ends) | rk4 | rk45 | gauss-kronrod")->capture_default_str();
-  sub.add_option("--h", a.h, "rk4 step (default 0.001)");
-  sub.add_option("--tol", a.tol, "Tolerance of rk45 / gauss-kronrod (default 1e-12 / 1e-14)");
+  add_quadrature_options(sub, a.quadrature, "auto (the solvers' default, gk-tanh-sinh)");
   sub.add_option("--points-out", a.points_out, "Number of curve points to print (0: none; svg uses 200 if 0)")->capture_default_str();
   a.format = add_format_option(sub, {"json", "csv", "svg"});
 }
@@ -25,10 +23,11 @@ PreparedSegment prepare_segment(const SegmentArgs& a) {
   const auto p = parse_points(a.points, 3, "points");
   PreparedSegment s{{{p[0][0], p[0][1]}, {p[1][0], p[1][1]}, {p[2][0], p[2][1]}}, {}, {}};
   s.options.solver = parse_root_method(a.solver);
-  if (a.integrator != "auto") {
-    s.integrator = make_la_integrator(a.integrator, IntegratorOptions{a.h, a.tol});
-  } else if (a.h || a.tol) {
-    throw_input_error("lac", "integrator", "--h and --tol need an explicit --integrator (rk4 | rk45 | gauss-kronrod)");
+  if (a.quadrature.integrator != "auto") {
+    s.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
+  } else if (a.quadrature.any_option()) {
+    throw_input_error("lac", "integrator", "--h, --tol and --panels need an explicit --integrator (" +
+                                               method_names_text(quadrature_methods(), " | ") + ")");
   }
   if (a.points_out < 0) throw_input_error("lac", "points-out", a.points_out, "[0, inf)");
   return s;
@@ -73,7 +72,7 @@ void print_segment(const G1Segment& g, const SegmentArgs& a, const PreparedSegme
     j["evaluations"] = g.evaluations;
     j["seconds"] = seconds;
     j["solver"] = std::string(to_string(s.options.solver));
-    j["integrator"] = s.integrator ? describe(*s.integrator) : std::string(SegmentQuadrature::name);
+    j["integrator"] = s.integrator ? describe(*s.integrator) : std::string(GkTanhSinh::name);
     if (!pts.empty()) {
       nlohmann::json arr = nlohmann::json::array();
       for (const auto& q : pts) arr.push_back({{"x", q.position.real()}, {"y", q.position.imag()}, {"s", q.s},

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "cli/command.hpp"
+#include "cli/quadrature_args.hpp"
 #include "lac/curves/quadratic/quadratic_position.hpp"
 #include "io/timing.hpp"
 
@@ -15,8 +16,7 @@ struct QuadraticArgs {
   double alpha = 0, gamma = 0, lambda = 1;
   std::optional<double> s_from, s_to;
   int points = 100;
-  std::string integrator = "gauss-kronrod";
-  std::optional<double> h, tol;
+  QuadratureArgs quadrature{.integrator = "gauss-kronrod"};
   std::string inverse = "ours";
   bool through_inflection = false;
   std::string* format = nullptr;
@@ -41,13 +41,13 @@ void run(const QuadraticArgs& a) {
   curve.check_s(s0, "s-from");
   curve.check_s(s1, "s-to");
   if (a.points < 1) throw_input_error("lac quadratic", "points", a.points, "[1, inf)");
-  const AnyQuadrature method = make_quadrature(a.integrator, IntegratorOptions{a.h, a.tol});
+  const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   io::Stopwatch clock;
   std::vector<PositionResult> pts;
   if (a.points == 1) pts.push_back(position_at(curve, s1, method));
   else pts = polyline(curve, s0, s1, a.points, method);
   const double seconds = clock.seconds();
-  const std::string described = std::visit([](const auto& m) { return describe(m); }, method);
+  const std::string described = describe(method);
 
   if (parse_format(*a.format) == Format::json) {
     nlohmann::json arr = nlohmann::json::array();
@@ -89,9 +89,7 @@ void setup(CLI::App& app) {
   sub->add_option("--s-from", a->s_from, "First arc length (default: 99.9% of a finite bound, else -2/lambda)");
   sub->add_option("--s-to", a->s_to, "Last arc length (default: 99.9% of a finite bound, else 2/lambda)");
   sub->add_option("--points", a->points, "Number of points uniform in s (1: only --s-to)")->capture_default_str();
-  sub->add_option("--integrator", a->integrator, "rk4 | rk45 | gauss-kronrod")->capture_default_str();
-  sub->add_option("--h", a->h, "rk4 step in s (default 0.001)");
-  sub->add_option("--tol", a->tol, "Tolerance of the adaptive methods");
+  add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--inverse", a->inverse, "erfi/erf inverse for kappa(s): ours | hybrid-003")
       ->check(CLI::IsMember({"ours", "hybrid-003"}))
       ->capture_default_str();

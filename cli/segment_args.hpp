@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cli/command.hpp"
+#include "cli/quadrature_args.hpp"
 #include "lac/constructions/triangle_g1.hpp"
 
 namespace lac::cli {
@@ -13,15 +14,14 @@ namespace lac::cli {
 struct SegmentArgs {
   std::string points;
   std::string solver = "toms748";
-  std::string integrator = "auto";
-  std::optional<double> h, tol;
+  QuadratureArgs quadrature{.integrator = "auto"};
   int points_out = 0;
   std::string* format = nullptr;
 };
 struct PreparedSegment {
   ControlTriangle triangle;
   SegmentOptions options;
-  std::optional<LaIntegrator> integrator;  ///< empty: the solvers' default (gk+tanh-sinh)
+  std::optional<AnyQuadrature> integrator;  ///< empty: the solvers' default (gk-tanh-sinh)
 };
 void add_segment_options(CLI::App& sub, SegmentArgs& a);
 PreparedSegment prepare_segment(const SegmentArgs& a);

@@ -37,7 +37,7 @@ void run(const SpaceArgs& a) {
   const bool compound = a.alpha1 || a.beta1 || a.r_theta;
   SpaceSegmentOptions o;
   o.solver = parse_nonlinear_method(a.solver);
-  o.frenet.method = parse_frenet_method(a.integrator);
+  o.frenet.method = parse_ode_method(a.integrator);
   if (a.tol) o.frenet.rtol = *a.tol, o.frenet.atol = 0.1 * *a.tol;
   o.tangent_tolerance = a.tangent_tolerance;
   if (a.points < 0 || a.points == 1) throw_input_error("lac space", "points", a.points, "0 or [2, inf)");
@@ -65,7 +65,7 @@ void run(const SpaceArgs& a) {
                         {"message", r.message},
                         {"kind", compound ? "compound" : "g1"},
                         {"solver", std::string(to_string(r.solver))},
-                        {"integrator", to_string(o.frenet.method)},
+                        {"integrator", std::string(to_string(o.frenet.method))},
                         {"length", r.pieces.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.length)},
                         {"tangent_error", std::isfinite(r.tangent_error) ? nlohmann::json(r.tangent_error) : nlohmann::json(nullptr)},
                         {"position_error", r.pieces.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.position_error)},
@@ -121,7 +121,8 @@ void setup(CLI::App& app) {
   sub->add_option("--beta1", a->beta1, "Compound: LTG slope of the second segment (default --beta)");
   sub->add_option("--r-theta", a->r_theta, "Compound: cone ratio r_theta in (0, 1) placing the joint (default 0.5)");
   sub->add_option("--solver", a->solver, "simplex (000's) | ceres | newton")->capture_default_str();
-  sub->add_option("--integrator", a->integrator, "magnus6 | rk45 | rk4")->capture_default_str();
+  sub->add_option("--integrator", a->integrator, "Frenet integration: " + method_names_text(ode_methods(), " | "))
+      ->capture_default_str();
   sub->add_option("--tol", a->tol, "Integration rtol (default 1e-10; atol = tol/10)");
   sub->add_option("--tangent-tolerance", a->tangent_tolerance, "Success: end-tangent error <= this (rad)")->capture_default_str();
   sub->add_option("--points", a->points, "Also output this many curve points (0: none)")->capture_default_str();

@@ -118,10 +118,10 @@ double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double tors
 }
 
 // `frenet`: integration settings (default: the options'); screening uses coarser ones.
-Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet) {
+Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const OdeOptions* frenet) {
   Trial t;
   const SpaceSegmentOptions& o = *pb.opt;
-  const FrenetOptions& fo = frenet ? *frenet : o.frenet;
+  const OdeOptions& fo = frenet ? *frenet : o.frenet;
   const CompoundSpaceSpec& s = pb.spec;
   if (!(lambda0 >= 0) || !(nu0 > 0) || !std::isfinite(lambda0) || !std::isfinite(nu0)) {
     t.why = "lambda0 or nu0 out of range";
@@ -182,7 +182,7 @@ Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const F
 
 // A trial whose curve laws are not representable (LaSpaceCurve rejects Λ, Ω, ν or an arc length
 // where k·s overflows: R11 of docs/robustness.md) is an undefined trial, not the caller's error.
-Trial construct(const Problem& pb, double lambda0, double nu0, const FrenetOptions* frenet = nullptr) {
+Trial construct(const Problem& pb, double lambda0, double nu0, const OdeOptions* frenet = nullptr) {
   try {
     return construct_unchecked(pb, lambda0, nu0, frenet);
   } catch (const InputError& e) {
@@ -312,11 +312,11 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   };
   // End-tangent error of the construction at x for each hand; undefined points are dropped.
   // Screening only ranks starting points: a coarse tolerance (1e-6) is enough and 3–4× cheaper.
-  FrenetOptions coarse = opt.frenet;
+  OdeOptions coarse = opt.frenet;
   coarse.rtol = std::max(coarse.rtol, 1e-6);
   coarse.atol = std::max(coarse.atol, 1e-7);
   coarse.h = std::max(coarse.h, 1e-2);
-  auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const FrenetOptions* fo) {
+  auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const OdeOptions* fo) {
     for (int h = 0; h < hands; ++h) {
       if (!in_box(x) || ode >= opt.max_ode_evaluations) continue;
       const Trial t = construct(problems[h], std::exp(x[0]), std::exp(x[1]), fo);

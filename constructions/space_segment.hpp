@@ -52,7 +52,7 @@ struct SpaceSegmentOptions {
   double tangent_tolerance = 1e-11;  ///< success: end-tangent angle error ≤ this (rad)
   /// Integration: order-6 Magnus, rtol 1e-10, atol 1e-11 (end tangents accurate to ~1e-13 rad,
   /// tests/space); rk45 / rk4 selectable.
-  FrenetOptions frenet{FrenetMethod::magnus6, 1e-10, 1e-11};
+  OdeOptions frenet{OdeMethod::magnus6, 1e-10, 1e-11};
   double max_turning = 4 * M_PI;     ///< a trial curve may turn its tangent by at most this (∫κ ds)
   double max_torsion_turning = 40 * M_PI;  ///< and rotate its frame about T by at most this (∫τ ds)
   double max_length = 100;           ///< and be at most this long in standard form (ρ(0) = 1)
@@ -99,7 +99,7 @@ struct SpaceSegmentResult {
   Eigen::Matrix3d placement = Eigen::Matrix3d::Identity();
   Vec3 origin = Vec3::Zero();
   Frame3 joint_frame;              ///< standard-form frame at the joint (segment 1 starts there)
-  FrenetOptions frenet{};          ///< integration settings the curve was made with
+  OdeOptions frenet{};             ///< integration settings the curve was made with
 };
 
 /// A point of a solved segment in user coordinates; kappa, tau in user units (tau < 0 mirrored).

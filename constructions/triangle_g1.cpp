@@ -428,7 +428,7 @@ std::vector<SegmentSample> sample(const G1Segment& g, int n, const M& method) {
 
 }  // namespace
 
-SegmentQuadrature default_segment_integrator() { return SegmentQuadrature{}; }
+GkTanhSinh default_segment_integrator() { return GkTanhSinh{}; }
 
 void SegmentOptions::validate() const {
   root.validate();
@@ -442,7 +442,7 @@ G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions&
   return solve(t, alpha, alpha, 1.0, false, o, default_segment_integrator(), "solve_g1");
 }
 
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const LaIntegrator& method) {
+G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const AnyQuadrature& method) {
   return std::visit([&](const auto& mm) { return solve(t, alpha, alpha, 1.0, false, o, mm, "solve_g1"); }, method);
 }
 
@@ -451,13 +451,13 @@ G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1,
 }
 
 G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o,
-                         const LaIntegrator& method) {
+                         const AnyQuadrature& method) {
   return std::visit([&](const auto& mm) { return solve(t, alpha0, alpha1, r, true, o, mm, "solve_compound"); }, method);
 }
 
 std::vector<SegmentSample> sample_segment(const G1Segment& g, int n) { return sample(g, n, default_segment_integrator()); }
 
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const LaIntegrator& method) {
+std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const AnyQuadrature& method) {
   return std::visit([&](const auto& mm) { return sample(g, n, mm); }, method);
 }
 

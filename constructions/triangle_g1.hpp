@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "lac/common/status.hpp"
-#include "lac/curves/planar/la_integrator.hpp"
-#include "lac/integrators/gk_tanh_sinh.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/integrators/registry.hpp"
 #include "lac/solvers/root_1d.hpp"
 
 namespace lac {
@@ -40,10 +40,10 @@ struct ControlTriangle {
   Point2 a0, a1, a2;
 };
 
-/// Default position method of the segment solvers (segment_quadrature.hpp): Gauss–Kronrod at
-/// relative tolerance 1e-13 (one 21-point panel for most trial curves), tanh-sinh near the
-/// singular ends of the LA domain.
-SegmentQuadrature default_segment_integrator();
+/// Default position method of the segment solvers (registered as gk-tanh-sinh,
+/// integrators/gk_tanh_sinh.hpp): Gauss–Kronrod at relative tolerance 1e-13 (one 21-point panel
+/// for most trial curves), tanh-sinh near the singular ends of the LA domain.
+GkTanhSinh default_segment_integrator();
 
 struct SegmentOptions {
   RootMethod solver = RootMethod::toms748;  ///< bisection | secant | toms748 | ceres
@@ -115,12 +115,12 @@ struct G1Segment {
 
 /// Monotonic-rhythm G1 segment of slope α (any finite real).
 G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o = {});
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const LaIntegrator& method);
+G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const AnyQuadrature& method);
 
 /// Compound-rhythm segment: α0, α1 finite, r ∈ (0, 1) the share of the turning in segment 0.
 G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o = {});
 G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o,
-                         const LaIntegrator& method);
+                         const AnyQuadrature& method);
 
 /// A point of a solved segment in user coordinates, ordered from a0 to a2.
 struct SegmentSample {
@@ -134,6 +134,6 @@ struct SegmentSample {
 /// About n points (≥ 2 per piece, uniform in arc length within each piece, the joint once)
 /// of a usable segment, from a0 to a2. InputError if the segment is not usable or n < 2.
 std::vector<SegmentSample> sample_segment(const G1Segment& g, int n);
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const LaIntegrator& method);
+std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const AnyQuadrature& method);
 
 }  // namespace lac

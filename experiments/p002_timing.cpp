@@ -6,7 +6,7 @@
 //   endpoint  position_at(curve, θ = 1): one integral over [0, 1];
 //   polyline  polyline(curve, θ from 0 to 1, --points points): what 002 calls rendering a segment;
 //             with the default 1001 points the spacing is 0.001, the paper's RK4 step.
-// Both through the run-time LaIntegrator registry (the variant dispatch is included in the time),
+// Both through the run-time quadrature registry (the variant dispatch is included in the time),
 // with the position form chosen by `--form` (default auto: s-form for α ≤ 1/2, as 002 does).
 // Accuracy of every timed result: relative error of the endpoint against the 40-digit reference
 // (tests/reference/p002_truncation.csv). The "best" method is found by measurement: the fastest
@@ -20,7 +20,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "experiments/p002_data.hpp"
 #include "io/progress.hpp"
 #include "io/table.hpp"
@@ -34,14 +34,14 @@ using lac::io::sci;
 /// "name[:h=X][:tol=Y]" -> a configured method and its label.
 struct MethodSpec {
   std::string label;
-  lac::LaIntegrator method;
+  lac::AnyQuadrature method;
 };
 
 MethodSpec parse_method(const std::string& spec) {
   std::stringstream ss(spec);
   std::string name, part;
   std::getline(ss, name, ':');
-  lac::IntegratorOptions o;
+  lac::QuadratureOptions o;
   while (std::getline(ss, part, ':')) {
     const auto eq = part.find('=');
     if (eq == std::string::npos) lac::throw_input_error("exp_p002_timing", "methods", "option '" + part + "' is not key=value");
@@ -51,7 +51,7 @@ MethodSpec parse_method(const std::string& spec) {
     else if (key == "tol") o.tol = value;
     else lac::throw_input_error("exp_p002_timing", "methods", "unknown option '" + key + "' (valid: h, tol)");
   }
-  return {spec, lac::make_la_integrator(name, o)};
+  return {spec, lac::make_quadrature(name, o)};
 }
 
 std::vector<MethodSpec> parse_methods(const std::string& list) {
@@ -63,8 +63,7 @@ std::vector<MethodSpec> parse_methods(const std::string& list) {
 }
 
 bool registry_has(std::string_view name) {
-  const auto names = lac::la_integrator_names();
-  return std::find(names.begin(), names.end(), name) != names.end();
+  return lac::find_method(lac::quadrature_methods(), name) != nullptr;
 }
 
 // A measurement whose single call needs more integrand evaluations than this is not timed (it would
@@ -86,7 +85,7 @@ struct Settings {
   lac::Form form = lac::Form::automatic;
 };
 
-double endpoint_error(const lac::p002::ReferenceEnd& ref, const lac::LaIntegrator& m, lac::Form form, long* evals,
+double endpoint_error(const lac::p002::ReferenceEnd& ref, const lac::AnyQuadrature& m, lac::Form form, long* evals,
                       lac::Status* status) {
   const lac::LaCurve curve(ref.alpha, ref.lambda);
   const auto r = lac::position_at(curve, lac::Parameter::theta, ref.theta_end, m, form);
@@ -95,7 +94,7 @@ double endpoint_error(const lac::p002::ReferenceEnd& ref, const lac::LaIntegrato
   return std::abs(r.point.position - ref.c) / ref.abs_c;
 }
 
-lac::io::TimingStats time_endpoint(const lac::p002::ReferenceEnd& ref, const lac::LaIntegrator& m, const Settings& s) {
+lac::io::TimingStats time_endpoint(const lac::p002::ReferenceEnd& ref, const lac::AnyQuadrature& m, const Settings& s) {
   const lac::LaCurve curve(ref.alpha, ref.lambda);
   double sink = 0;
   auto stats = lac::io::time_calls(
@@ -106,7 +105,7 @@ lac::io::TimingStats time_endpoint(const lac::p002::ReferenceEnd& ref, const lac
   return stats;
 }
 
-Measurement measure(const lac::p002::ReferenceEnd& ref, const lac::LaIntegrator& m, const Settings& s) {
+Measurement measure(const lac::p002::ReferenceEnd& ref, const lac::AnyQuadrature& m, const Settings& s) {
   Measurement out;
   const lac::LaCurve curve(ref.alpha, ref.lambda);
   out.endpoint_rel_error = endpoint_error(ref, m, s.form, &out.endpoint_evaluations, &out.status);

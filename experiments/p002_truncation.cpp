@@ -20,7 +20,7 @@
 #include <numeric>
 #include <optional>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "experiments/p002_data.hpp"
 #include "io/table.hpp"
 
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
   try {
     const std::vector<double> steps = {0.1, 0.01, 0.001};  // 002 Appendix B columns
     const auto reference = lac::p002::read_reference(reference_csv);
-    const lac::LaIntegrator compare = lac::make_la_integrator(integrator, lac::IntegratorOptions{std::nullopt, tol});
+    const lac::AnyQuadrature compare = lac::make_quadrature(integrator, lac::QuadratureOptions{std::nullopt, tol});
 
     std::vector<PaperRow> paper;
     for (auto& r : lac::p002::CsvRows::read(paper_csv).rows) {

@@ -243,7 +243,7 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
     ref_gk.tol = 1e-14;
     const auto ref = lac::polyline(c, s0, s1, points, ref_gk).back().point.position;
     for (const std::string m : {"rk4", "rk45", "gauss-kronrod"}) {
-      lac::IntegratorOptions o;
+      lac::QuadratureOptions o;
       if (m == "rk4") o.h = (s1 - s0) / (points - 1);  // one RK4 step per segment
       else o.tol = 1e-10;
       const auto method = lac::make_quadrature(m, o);
@@ -251,7 +251,7 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
       auto poly = lac::io::time_calls([&] { last = lac::polyline(c, s0, s1, points, method); }, std::max<size_t>(5, st.samples / 3),
                                       st.sample_seconds);
       const double err = std::abs(last.back().point.position - ref);
-      t.add_row({name, std::to_string(points) + "-point curve", std::visit([](const auto& q) { return describe(q); }, method),
+      t.add_row({name, std::to_string(points) + "-point curve", lac::describe(method),
                  us(poly.median), us(poly.p10), us(poly.p90), "µs", sci(err, 2), std::string(lac::to_string(last.back().status)),
                  "<= 200 µs"});
     }

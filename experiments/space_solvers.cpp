@@ -40,7 +40,7 @@ double thread_cpu_seconds() {
 
 struct Config {
   lac::NonlinearMethod solver;
-  lac::FrenetMethod integrator;
+  lac::OdeMethod integrator;
 };
 
 }  // namespace
@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  const std::vector<Config> configs = {{lac::NonlinearMethod::simplex, lac::FrenetMethod::magnus6},
-                                       {lac::NonlinearMethod::ceres, lac::FrenetMethod::magnus6},
-                                       {lac::NonlinearMethod::newton, lac::FrenetMethod::magnus6},
-                                       {lac::NonlinearMethod::newton, lac::FrenetMethod::rk45}};
+  const std::vector<Config> configs = {{lac::NonlinearMethod::simplex, lac::OdeMethod::magnus6},
+                                       {lac::NonlinearMethod::ceres, lac::OdeMethod::magnus6},
+                                       {lac::NonlinearMethod::newton, lac::OdeMethod::magnus6},
+                                       {lac::NonlinearMethod::newton, lac::OdeMethod::rk45}};
   lac::io::Table t;
   t.columns = {"segment", "solver", "integrator", "configurations", "success", "median ms", "p10 ms", "p90 ms",
                "median CPU ms", "median constructions", "median iterations", "worst tangent error (rad)", "000 (ms)",
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
       lac::SpaceSegmentOptions o;
       o.solver = cfg.solver;
       o.frenet.method = cfg.integrator;
-      if (cfg.integrator == lac::FrenetMethod::rk45) o.frenet.rtol = 1e-12, o.frenet.atol = 1e-13;
+      if (cfg.integrator == lac::OdeMethod::rk45) o.frenet.rtol = 1e-12, o.frenet.atol = 1e-13;
       std::vector<double> ms, cpu_ms, constructions, iterations;
       int success = 0;
       double worst = 0;
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
       }
       const bool paper_row = compound && cfg.solver == lac::NonlinearMethod::simplex;
       const double median_cpu = quantile(cpu_ms, 0.5);
-      t.add_row({compound ? "compound" : "G1", std::string(lac::to_string(cfg.solver)), lac::to_string(cfg.integrator),
+      t.add_row({compound ? "compound" : "G1", std::string(lac::to_string(cfg.solver)), std::string(lac::to_string(cfg.integrator)),
                  std::to_string(count), lac::io::fmt(100.0 * success / count, 4) + " %", lac::io::fmt(quantile(ms, 0.5), 3),
                  lac::io::fmt(quantile(ms, 0.1), 3), lac::io::fmt(quantile(ms, 0.9), 3), lac::io::fmt(median_cpu, 3),
                  lac::io::fmt(quantile(constructions, 0.5), 4), lac::io::fmt(quantile(iterations, 0.5), 4),

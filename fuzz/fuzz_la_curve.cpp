@@ -1,11 +1,11 @@
 // libFuzzer target: the planar LA curve (curves/planar) fed arbitrary doubles — constructor,
 // closed-form conversions, frame_at, position_at and polyline with every integrator by name
-// (rk4, rk45, gauss-kronrod, igf) and every form — and the igf closed form directly.
+// (every method of the quadrature registry) and every form — and the igf closed form directly.
 // Properties: see fuzz/fuzz_support.hpp.
 #include <algorithm>
 #include <string>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace lac;
@@ -64,15 +64,16 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   guarded(at + " frame_at", [&] { check_point("frame_at", c.frame_at(p, t)); });
 
   // Positions with an integrator chosen by name and options from the input.
-  const auto names = la_integrator_names();
-  const std::string_view name = names[in.byte() % names.size()];
-  IntegratorOptions options;
+  const auto methods = quadrature_methods();
+  const std::string_view name = methods[in.byte() % methods.size()].name;
+  QuadratureOptions options;
   const uint8_t option_bits = in.byte();
   if (option_bits & 1) options.h = in.number();
   if (option_bits & 2) options.tol = in.number();
+  if (option_bits & 16) options.panels = in.int_in(-1, 100);
   const Form form = option_bits & 4 ? Form::theta : option_bits & 8 ? Form::s : Form::automatic;
-  LaIntegrator method;
-  if (!guarded(std::string(name) + " options", [&] { method = make_la_integrator(name, options); })) return 0;
+  AnyQuadrature method;
+  if (!guarded(std::string(name) + " options", [&] { method = make_quadrature(name, options); })) return 0;
 
   // Budgets 40 times below the defaults: budget exhaustion is what is checked, and a long
   // integration at the default budget (up to 8.4·10^5 GK evaluations) would hold the 10^6-execution
@@ -83,8 +84,12 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   const double t1 = in.number();
   const int n = in.int_in(2, 40);
   // rk4 runs |Δ|/h steps, capped at 5·10^6 (seconds under the sanitizers): keep the fuzzer to
-  // problems of at most 10^6 steps so that its time bound catches real hangs only.
-  if (const Rk4* rk4 = std::get_if<Rk4>(&method)) {
+  // problems of at most 10^6 steps so that its time bound catches real hangs only. gauss-legendre
+  // and gk-tanh-sinh have no budget of their own to lower (a call stops at Gauss–Kronrod's default
+  // 8.4·10^5 evaluations): keep them to at most 64 pieces of 64 rad.
+  const Rk4* rk4 = std::get_if<Rk4>(&method);
+  const bool default_budget = std::holds_alternative<GaussLegendre>(method) || std::holds_alternative<GkTanhSinh>(method);
+  if (rk4 || default_budget) {
     double span = 0;
     for (double end : {t, t1}) {
       try {
@@ -93,7 +98,8 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
       } catch (const InputError&) {  // position_at throws the same error quickly
       }
     }
-    if (!(span / rk4->h <= 1e6)) return 0;
+    if (rk4 && !(span / rk4->h <= 1e6)) return 0;
+    if (default_budget && !(span <= 64.0 * lac::detail::kMaxTurningPerPiece)) return 0;
   }
   const std::string call = curve_text + " " + std::string(name) + " form " + std::string(to_string(form)) +
                            (p == Parameter::s ? " s " : " theta ");

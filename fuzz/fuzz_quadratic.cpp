@@ -56,8 +56,8 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   });
   guarded(at + " theta_at_s", [&] { require_finite_result("theta_at_s", c->theta_at_s(s)); });
 
-  const auto names = quadrature_names();
-  const std::string_view name = names[in.byte() % names.size()];
+  const auto methods = quadrature_methods();
+  const std::string_view name = methods[in.byte() % methods.size()].name;
   AnyQuadrature method;
   if (!guarded(std::string(name), [&] { method = make_quadrature(name); })) return 0;
   // Budgets 200–5000 times below the defaults, so that a sanitized call stays well under the 1 s

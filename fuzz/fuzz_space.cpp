@@ -64,13 +64,15 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   spec.omega0 = in.number();
   spec.type = in.byte() % 2 ? TorsionType::type2 : TorsionType::type1;
   SpaceSegmentOptions o;
-  o.frenet.method = static_cast<FrenetMethod>(in.byte() % 3);
+  // The byte's choice as before OdeMethod was reordered (rk4 first), so stored inputs keep their method.
+  constexpr OdeMethod kMethods[] = {OdeMethod::rk45, OdeMethod::rk4, OdeMethod::magnus6};
+  o.frenet.method = kMethods[in.byte() % 3];
   // A twentieth of the default step cap: every call integrates the 12-dimensional Frenet system,
   // and at 20000 steps the 10^6-execution campaign ran at ~110 executions/s.
   o.frenet.max_steps = 1'000;
   const std::string spec_text = "alpha " + show(spec.alpha0) + " beta " + show(spec.beta0) + " omega " +
                                 show(spec.omega0) + " type " + std::to_string(static_cast<int>(spec.type)) +
-                                " method " + to_string(o.frenet.method);
+                                " method " + std::string(to_string(o.frenet.method));
 
   switch (mode % 4) {
     case 0: {  // the curve and its Frenet integration

@@ -1,5 +1,5 @@
 #pragma once
-// Default position quadrature of the segment solvers: Boost Gauss–Kronrod (G10K21) with a
+// `gk-tanh-sinh`, the default position quadrature of the segment solvers: Boost Gauss–Kronrod (G10K21) with a
 // shallow recursion, falling back to Boost tanh-sinh when Gauss–Kronrod does not meet its
 // tolerance. The similar-triangle search draws trial curves up to the ends of the LA domain,
 // where ρ → 0 or ∞ at an end of the integration interval and the integrand has an algebraic
@@ -17,8 +17,8 @@
 
 namespace lac {
 
-struct SegmentQuadrature {
-  static constexpr std::string_view name = "gk+tanh-sinh";
+struct GkTanhSinh {
+  static constexpr std::string_view name = "gk-tanh-sinh";
   double tol = 1e-13;             ///< relative tolerance of both rules
   unsigned gk_max_depth = 4;      ///< Gauss–Kronrod bisection depth before falling back
   std::size_t ts_max_levels = 12; ///< tanh-sinh refinement levels (Boost default 15)
@@ -92,6 +92,6 @@ struct SegmentQuadrature {
   }
 };
 
-static_assert(QuadratureMethod<SegmentQuadrature>);
+static_assert(QuadratureMethod<GkTanhSinh>);
 
 }  // namespace lac

@@ -71,4 +71,22 @@ inline IntegralResult<std::complex<double>> igf_position_delta(double alpha, dou
   return igf_position_delta_detailed(alpha, lambda, theta0, theta1, options).integral;
 }
 
+/// `igf` as a position method (the LaClosedForm of curves/planar/la_position.hpp, registered in
+/// integrators/registry.hpp): C(θ1) − C(θ0) of the standard-form curve with slope α and Λ.
+struct Igf {
+  static constexpr std::string_view name = "igf";
+  /// Relative accuracy asked of each C(θ1) − C(θ0); see IgfOptions (default 1e-12).
+  double tol = IgfOptions{}.tol;
+  /// Segment-series piece cap before the Gauss–Kronrod fallback; see IgfOptions.
+  long max_pieces = IgfOptions{}.max_pieces;
+
+  IgfOptions options() const { return IgfOptions{tol, max_pieces}; }
+  void validate() const { options().validate(); }
+
+  /// InputError for θ0, θ1 outside the θ domain of (α, Λ) (see igf_position_delta_detailed).
+  IntegralResult<std::complex<double>> integrate_theta(double alpha, double lambda, double theta0, double theta1) const {
+    return igf_position_delta(alpha, lambda, theta0, theta1, options());
+  }
+};
+
 }  // namespace lac

@@ -1,7 +1,7 @@
 #pragma once
 // Position on a standard-form planar LA curve (MATH.md §1; 002 Eqs. 7–8) with any
 // quadrature method of integrators/quadrature.hpp, or with a closed form (igf) that
-// satisfies LaClosedForm.
+// satisfies LaClosedForm; or chosen at run time (AnyQuadrature, integrators/registry.hpp).
 //   θ-form: C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ     s-form: C(s) = ∫₀^s e^{iθ(u)} du
 #include <algorithm>
 #include <cmath>
@@ -17,6 +17,7 @@
 #include "lac/common/status.hpp"
 #include "lac/curves/planar/la_curve.hpp"
 #include "lac/integrators/quadrature.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 
@@ -28,10 +29,10 @@ constexpr std::string_view to_string(Form f) {
 }
 Form parse_form(std::string_view text);  // "theta" | "s" | "auto"; InputError otherwise
 
-/// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve.
+/// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve (α, Λ), e.g. Igf.
 template <class M>
-concept LaClosedForm = requires(const M& m, const LaCurve& c) {
-  { m.integrate_theta(c, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
+concept LaClosedForm = requires(const M& m, double alpha, double lambda) {
+  { m.integrate_theta(alpha, lambda, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
   { m.validate() };
   { M::name } -> std::convertible_to<std::string_view>;
 };
@@ -58,13 +59,17 @@ struct PositionResult {
 
 namespace detail {
 
+// Always inlined: in a unit that instantiates every registered method (the run-time dispatch),
+// GCC's growth limits otherwise leave them out of line in the adaptive methods' inner loops.
 struct ThetaFormIntegrand {
   const LaCurve* c;
-  std::complex<double> operator()(double psi) const { return std::polar(std::exp(c->log_rho_at_theta_unchecked(psi)), psi); }
+  [[gnu::always_inline]] std::complex<double> operator()(double psi) const {
+    return std::polar(std::exp(c->log_rho_at_theta_unchecked(psi)), psi);
+  }
 };
 struct SFormIntegrand {
   const LaCurve* c;
-  std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
+  [[gnu::always_inline]] std::complex<double> operator()(double u) const { return std::polar(1.0, c->theta_at_s_unchecked(u)); }
 };
 
 /// e^{iψ} for a run of nearby angles, as an RK4 sweep asks for them: one sincos at a base angle,
@@ -160,10 +165,12 @@ void for_each_subpiece(const LaCurve& c, Form form, double a, double b, Visit&& 
 
 /// Evaluation budget of one position call made of several quadrature calls (a call that turns
 /// more than kMaxTurningPerPiece): the method's own per-call budget, so that up to 10^6 pieces
-/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces.
+/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces. A method without
+/// a budget of its own (GaussLegendre: fixed cost per call; GkTanhSinh: bounded depth and levels)
+/// gets Gauss–Kronrod's default one.
 template <class M>
 long evaluation_budget(const M&) {
-  return std::numeric_limits<long>::max();
+  return 21 * (2 * GaussKronrod{}.max_intervals + 1);
 }
 inline long evaluation_budget(const Rk45& m) { return 6 * m.max_steps + 1; }
 inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_intervals + 1); }
@@ -174,8 +181,7 @@ inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_in
 template <class M>
 long polyline_budget(const M& m, long n) {
   if constexpr (requires { m.max_pieces; }) return 10 * m.max_pieces + 1000 * n;
-  const long base = evaluation_budget(m);
-  return base == std::numeric_limits<long>::max() ? base : base + 64 * 21 * n;
+  return evaluation_budget(m) + 64 * 21 * n;
 }
 
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
@@ -184,7 +190,8 @@ template <class M>
 IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& m, Form form, double a, double b) {
   IntegralResult<std::complex<double>> r;
   if constexpr (LaClosedForm<M>) {
-    r = form == Form::s ? m.integrate_theta(c, c.theta_at_s(a), c.theta_at_s(b)) : m.integrate_theta(c, a, b);
+    r = form == Form::s ? m.integrate_theta(c.alpha(), c.lambda(), c.theta_at_s(a), c.theta_at_s(b))
+                        : m.integrate_theta(c.alpha(), c.lambda(), a, b);
   } else if constexpr (std::same_as<M, Rk4>) {
     Rk4Sweep<std::complex<double>> sweep(m);
     sweep.reserve(b - a);
@@ -389,5 +396,11 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   }
   return out;
 }
+
+/// Run-time choice of the method (make_quadrature by name): one dispatch, then the templates above.
+PositionResult position_at(const LaCurve& c, Parameter p, double t, const AnyQuadrature& method,
+                           Form form = Form::automatic);
+std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n,
+                                     const AnyQuadrature& method, Form form = Form::automatic);
 
 }  // namespace lac

@@ -3,16 +3,51 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <variant>
 
 namespace lac {
 
+namespace {
+
+/// Names of the registered methods that are quadratures (all but closed forms).
+template <std::size_t... I>
+std::string quadrature_names(std::index_sequence<I...>) {
+  std::string text;
+  auto add = [&text](std::string_view name, bool quadrature) {
+    if (quadrature) text.append(text.empty() ? "" : ", ").append(name);
+  };
+  (add(std::variant_alternative_t<I, AnyQuadrature>::name, QuadratureMethod<std::variant_alternative_t<I, AnyQuadrature>>), ...);
+  return text;
+}
+
+/// Calls f with the method when it is a quadrature (every registered method but the closed form igf).
+template <class F>
+auto with_quadrature(const AnyQuadrature& method, F&& f) {
+  return std::visit(
+      [&](const auto& m) {
+        using M = std::decay_t<decltype(m)>;
+        if constexpr (QuadratureMethod<M>) {
+          return f(m);
+        } else {
+          throw_input_error("quadratic position", "integrator",
+                            std::string(M::name) + " applies to planar LA curves in standard form only; valid here: " +
+                                quadrature_names(std::make_index_sequence<std::variant_size_v<AnyQuadrature>>{}));
+          return f(GaussKronrod{});  // not reached; gives the lambda its return type
+        }
+      },
+      method);
+}
+
+}  // namespace
+
 PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method) {
-  return std::visit([&](const auto& m) { return position_at(c, s, m); }, method);
+  return with_quadrature(method, [&](const auto& m) { return position_at(c, s, m); });
 }
 
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method) {
-  return std::visit([&](const auto& m) { return polyline(c, s0, s1, n, m); }, method);
+  return with_quadrature(method, [&](const auto& m) { return polyline(c, s0, s1, n, m); });
 }
 
 namespace {

@@ -19,9 +19,9 @@
 namespace lac {
 
 namespace detail {
-struct QuadraticSFormIntegrand {
+struct QuadraticSFormIntegrand {  // always inlined: see ThetaFormIntegrand (la_position.hpp)
   const QuadraticLaCurve* curve;
-  std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
+  [[gnu::always_inline]] std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
 };
 }  // namespace detail
 
@@ -101,7 +101,8 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
 /// θ leaves the double range on the way (docs/quadratic.md).
 std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n);
 
-/// Run-time choice of the quadrature method (make_quadrature by name).
+/// Run-time choice of the quadrature method (make_quadrature by name). InputError naming
+/// "integrator" for igf, a closed form of the planar LA curve in standard form only.
 PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "lac/integrators/magnus.hpp"
 #include "lac/integrators/ode.hpp"
 
 namespace lac {
@@ -47,78 +48,30 @@ struct FrenetRhs {
 
 double cone_gap(const State& y, double cone_angle) { return cone_angle_of(y.segment<3>(0)) - cone_angle; }
 
-// ---- Magnus integrator on SE(3) -------------------------------------------------------------
-// The Frenet frame and position form g = (F, P) ∈ SE(3) with g' = g ξ(s), body-frame generator
-// ξ = (ω, v), ω = (τ, 0, κ) (Darboux vector), v = e_x. Magnus methods step g ← g exp(Ω) with Ω
-// from the generator at Gauss nodes; a helix (constant κ, τ) is integrated exactly and the frame
-// stays on SO(3) by construction. Hand-written: no library offers Lie-group Magnus steppers.
-// Ω of order 6 and the embedded order-4 Ω (error estimate) use 3 Gauss nodes (Blanes, Casas, Oteo,
-// Ros, Phys. Rep. 470 (2009), §5.2: Ω = α1 + α3/12 + [−20α1 − α3 + C1, α2 + C2]/240 with
-// C1 = [α1, α2], C2 = −[α1, 2α3 + C1]/60; order 4: α1 + α3/12 − [α1, α2]/12). Those formulas are
-// for Y' = A Y; for g' = g ξ every bracket [X, Y] becomes [Y, X] (transposition).
-struct Twist {
-  Vec3 w, v;
-  Twist operator+(const Twist& o) const { return {w + o.w, v + o.v}; }
-  Twist operator-(const Twist& o) const { return {w - o.w, v - o.v}; }
-  Twist operator*(double c) const { return {c * w, c * v}; }
-};
-// Bracket of the right-multiplied equation: [X, Y]_right = [Y, X]_se(3).
-Twist bracket(const Twist& x, const Twist& y) { return {y.w.cross(x.w), y.w.cross(x.v) - x.w.cross(y.v)}; }
-
-// exp of a twist: rotation R(w) and translation V(w) v (Rodrigues; series for small |w|).
-void apply_exp(const Twist& om, Vec3& t, Vec3& n, Vec3& b, Vec3& p) {
-  const double th2 = om.w.squaredNorm();
-  double A, B, C;
-  if (th2 < 1e-4) {
-    A = 1 - th2 / 6 * (1 - th2 / 20);
-    B = 0.5 - th2 / 24 * (1 - th2 / 30);
-    C = 1.0 / 6 - th2 / 120 * (1 - th2 / 42);
-  } else {
-    const double th = std::sqrt(th2), s = std::sin(th), c = std::cos(th);
-    A = s / th;
-    B = (1 - c) / th2;
-    C = (th - s) / (th2 * th);
-  }
-  const Vec3& w = om.w;
-  auto rot = [&](const Vec3& x) { return Vec3(x + A * w.cross(x) + B * w.cross(w.cross(x))); };
-  const Vec3 d = om.v + B * w.cross(om.v) + C * w.cross(w.cross(om.v));  // body-frame displacement
-  // new frame columns F R e_i, new position P + F d, with F = [t n b]
-  Eigen::Matrix3d f;
-  f << t, n, b;
-  p += f * d;
-  t = f * rot(Vec3::UnitX());
-  n = f * rot(Vec3::UnitY());
-  b = f * rot(Vec3::UnitZ());
-}
-
 // One stepping loop for all methods. `advance(s, y, f0, h)` returns the state after one exact
 // step of size h; event location calls it with varying h from the same step start.
 struct Stepper {
   const LaSpaceCurve& curve;
-  const FrenetOptions& opt;
+  const OdeOptions& opt;
   FrenetRhs rhs{&curve};
 
+  // Body-frame generator of g = (F, P) ∈ SE(3), g' = g ξ: ω = (τ, 0, κ) (Darboux vector), v = e_x.
   Twist generator(double s) const { return {Vec3(curve.tau(s), 0, curve.kappa(s)), Vec3::UnitX()}; }
 
-  // Magnus step; `scaled_err` gets |Ω6 − Ω4| over the tolerance.
+  // Magnus step (integrators/magnus.hpp); `scaled_err` gets |Ω6 − Ω4| over the tolerance.
   State magnus(double s, const State& y, double h, long& evals, double* scaled_err) const {
-    constexpr double kC = 0.3872983346207417;  // √15/10
-    const Twist a1 = generator(s + (0.5 - kC) * h), a2 = generator(s + 0.5 * h), a3 = generator(s + (0.5 + kC) * h);
+    RigidMotion g;
+    g.rotation << y.segment<3>(3), y.segment<3>(6), y.segment<3>(9);
+    g.position = y.segment<3>(0);
+    double err = 0;
+    magnus6_step([this](double u) { return generator(u); }, s, h, g, scaled_err ? &err : nullptr);
     evals += 3;
-    const Twist al1 = a2 * h, al2 = (a3 - a1) * (h * 1.2909944487358056), al3 = (a3 - a2 * 2.0 + a1) * (h * 10.0 / 3.0);
-    const Twist c1 = bracket(al1, al2);
-    const Twist c2 = bracket(al1, al3 * 2.0 + c1) * (-1.0 / 60.0);
-    const Twist om6 = al1 + al3 * (1.0 / 12.0) + bracket(al1 * -20.0 - al3 + c1, al2 + c2) * (1.0 / 240.0);
     if (scaled_err) {
-      const Twist om4 = al1 + al3 * (1.0 / 12.0) - c1 * (1.0 / 12.0);
-      const Twist d = om6 - om4;
       const double scale = opt.atol + opt.rtol * std::max(1.0, y.segment<3>(0).cwiseAbs().maxCoeff());
-      *scaled_err = std::max(d.w.cwiseAbs().maxCoeff(), d.v.cwiseAbs().maxCoeff()) / scale;
+      *scaled_err = err / scale;
     }
-    Vec3 p = y.segment<3>(0), t = y.segment<3>(3), n = y.segment<3>(6), b = y.segment<3>(9);
-    apply_exp(om6, t, n, b, p);
     State out;
-    out << p, t, n, b;
+    out << g.position, g.rotation.col(0), g.rotation.col(1), g.rotation.col(2);
     return out;
   }
 
@@ -127,12 +80,12 @@ struct Stepper {
   State advance(double s, const State& y, const State& f0, double h, long& evals, double* scaled_err = nullptr,
                 State* f_end = nullptr) const {
     switch (opt.method) {
-      case FrenetMethod::rk4:
+      case OdeMethod::rk4:
         evals += 4;
         return rk4_step(rhs, s, y, h);
-      case FrenetMethod::magnus6:
+      case OdeMethod::magnus6:
         return magnus(s, y, h, evals, scaled_err);
-      case FrenetMethod::rk45: break;
+      case OdeMethod::rk45: break;
     }
     auto f = rhs;
     auto st = DormandPrince45<State>::step(f, s, y, f0, h);
@@ -154,12 +107,12 @@ struct Stepper {
       r.frame = unpack(y);
       return r;
     }
-    const bool adaptive = opt.method != FrenetMethod::rk4;
+    const bool adaptive = opt.method != OdeMethod::rk4;
     State f0 = State::Zero();  // first stage of the next rk45 step (FSAL); unused otherwise
     double h;
     if (!adaptive) {
       h = span / std::max(1.0, std::ceil(span / opt.h));
-    } else if (opt.method == FrenetMethod::magnus6) {  // exact for a helix: start with a bounded turn
+    } else if (opt.method == OdeMethod::magnus6) {  // exact for a helix: start with a bounded turn
       h = std::min(span, 0.05 * curve.rho(s));
     } else {  // Hairer's starting step for order 5 with the state's scale (|T| = 1)
       f0 = rhs(s, y);
@@ -238,7 +191,7 @@ struct Stepper {
       ++r.steps;
       s = last ? s1 : s + hs;
       y = y_new;
-      if (opt.method == FrenetMethod::rk45) f0 = f_end;
+      if (opt.method == OdeMethod::rk45) f0 = f_end;
       if (adaptive) h = hs * factor;
     }
     r.frame = unpack(y);
@@ -270,34 +223,10 @@ double Frame3::orthonormality_error() const {
   return (f.transpose() * f - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
 }
 
-void FrenetOptions::validate() const {
-  constexpr const char* who = "FrenetOptions";
-  if (!(rtol >= 1e-15) || !std::isfinite(rtol)) throw_input_error(who, "rtol", rtol, "[1e-15, inf)");
-  if (!(atol > 0) || !std::isfinite(atol)) throw_input_error(who, "atol", atol, "(0, inf)");
-  if (!(h > 0) || !std::isfinite(h)) throw_input_error(who, "h", h, "(0, inf)");
-  if (max_steps < 1) throw_input_error(who, "max_steps", static_cast<double>(max_steps), "[1, inf)");
-}
-
-FrenetMethod parse_frenet_method(const std::string& name) {
-  if (name == "rk45") return FrenetMethod::rk45;
-  if (name == "rk4") return FrenetMethod::rk4;
-  if (name == "magnus6") return FrenetMethod::magnus6;
-  throw_input_error("parse_frenet_method", "integrator", "unknown name '" + name + "' (rk45 | rk4 | magnus6)");
-}
-
-const char* to_string(FrenetMethod m) {
-  switch (m) {
-    case FrenetMethod::rk45: return "rk45";
-    case FrenetMethod::rk4: return "rk4";
-    case FrenetMethod::magnus6: return "magnus6";
-  }
-  return "unknown";
-}
-
 double cone_angle_of(const Vec3& p) { return std::atan2(std::hypot(p.y(), p.z()), p.x()); }
 
 FrenetResult integrate_frenet(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1,
-                              const FrenetOptions& options) {
+                              const OdeOptions& options) {
   options.validate();
   check_interval(curve, s0, s1, "integrate_frenet");
   check_start(start, "integrate_frenet");
@@ -305,7 +234,7 @@ FrenetResult integrate_frenet(const LaSpaceCurve& curve, const Frame3& start, do
 }
 
 FrenetResult integrate_to_cone(const LaSpaceCurve& curve, const Frame3& start, double s0, double s_limit,
-                               double cone_angle, const FrenetOptions& options) {
+                               double cone_angle, const OdeOptions& options) {
   constexpr const char* who = "integrate_to_cone";
   options.validate();
   check_interval(curve, s0, s_limit, who);
@@ -317,7 +246,7 @@ FrenetResult integrate_to_cone(const LaSpaceCurve& curve, const Frame3& start, d
 }
 
 std::vector<Frame3> sample_frenet(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1, int n,
-                                  const FrenetOptions& options, Status* status) {
+                                  const OdeOptions& options, Status* status) {
   if (n < 2) throw_input_error("sample_frenet", "n", n, "[2, inf)");
   check_interval(curve, s0, s1, "sample_frenet");
   check_start(start, "sample_frenet");

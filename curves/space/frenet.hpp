@@ -1,9 +1,11 @@
 #pragma once
 // Frenet–Serret integration of an LA space curve (MATH.md §3; 000 §2.1):
 //   P' = T, T' = κN, N' = −κT + τB, B' = −τN
-// over a 12-vector state (P, T, N, B) with the project's steppers (integrators/ode.hpp):
-// adaptive Dormand–Prince 5(4) or fixed-step RK4; or an order-6 Magnus method on SE(3). After every accepted step the frame is
-// re-orthonormalized (Gram–Schmidt on T, N; B = T × N), so it stays orthonormal to rounding.
+// with a method of the ODE registry (OdeOptions, integrators/ode_registry.hpp): over a 12-vector
+// state (P, T, N, B) with the project's steppers (integrators/ode.hpp), adaptive Dormand–Prince 5(4)
+// or fixed-step RK4; or the order-6 Magnus stepper on SE(3) (integrators/magnus.hpp). After every
+// accepted step the frame is re-orthonormalized (Gram–Schmidt on T, N; B = T × N), so it stays
+// orthonormal to rounding.
 // Event location (meeting the cone angle(P, e_x) = θ of 000 §2.2) brackets the first sign change
 // over one step and refines it with Boost's TOMS 748 on exact single steps of varying size.
 #include <Eigen/Core>
@@ -13,6 +15,7 @@
 
 #include "lac/common/status.hpp"
 #include "lac/curves/space/la_space_curve.hpp"
+#include "lac/integrators/ode_registry.hpp"
 
 namespace lac {
 
@@ -28,21 +31,6 @@ struct Frame3 {
   double orthonormality_error() const;
 };
 
-/// rk45: Dormand–Prince 5(4), rk4: classical fixed step (integrators/ode.hpp), both on the
-/// 12-vector with re-orthonormalization; magnus6: adaptive order-6 Magnus on SE(3) (frenet.cpp).
-enum class FrenetMethod { rk45, rk4, magnus6 };
-/// "rk45" | "rk4" | "magnus6"; InputError naming "integrator" otherwise.
-FrenetMethod parse_frenet_method(const std::string& name);
-const char* to_string(FrenetMethod m);
-
-struct FrenetOptions {
-  FrenetMethod method = FrenetMethod::rk45;
-  double rtol = 1e-12;      ///< adaptive methods: relative tolerance per step
-  double atol = 1e-13;      ///< adaptive methods: absolute tolerance per step (standard-form units, ρ(0) = 1)
-  double h = 1e-3;          ///< rk4 fixed step in s
-  long max_steps = 20'000;  ///< cap on attempted steps (status max_iterations when hit)
-  void validate() const;
-};
 
 struct FrenetResult {
   Frame3 frame;             ///< state where integration stopped
@@ -57,16 +45,16 @@ struct FrenetResult {
 
 /// Integrates from (s0, start) to s1 ≥ s0; [s0, s1] must lie in curve.s_range() (InputError).
 FrenetResult integrate_frenet(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1,
-                              const FrenetOptions& options = {});
+                              const OdeOptions& options = {});
 
 /// Integrates from (s0, start) until angle(P, e_x) first reaches cone_angle ∈ (0, π) or s reaches
 /// s_limit (met_cone false then). Requires angle(P(s0), e_x) < cone_angle (or P(s0) = 0).
 FrenetResult integrate_to_cone(const LaSpaceCurve& curve, const Frame3& start, double s0, double s_limit,
-                               double cone_angle, const FrenetOptions& options = {});
+                               double cone_angle, const OdeOptions& options = {});
 
 /// Frames at n ≥ 2 equally spaced arc lengths from s0 to s1 (both included).
 std::vector<Frame3> sample_frenet(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1, int n,
-                                  const FrenetOptions& options = {}, Status* status = nullptr);
+                                  const OdeOptions& options = {}, Status* status = nullptr);
 
 /// angle(P, e_x) ∈ [0, π]; 0 at P = 0.
 double cone_angle_of(const Vec3& p);

@@ -41,6 +41,8 @@ TEST(CliEval, InvalidInputExitsWithStatusTwoAndOneLine) {
       {"eval --alpha 0.5 --lambda 1 --theta -0.5 --points 2147483647", "points"},  // was bad_alloc, exit 1
       {"eval --alpha 2 --lambda 1 --theta 1 --integrator euler", "integrator"},
       {"eval --alpha 2 --lambda 1 --theta 1 --integrator rk45 --h 0.1", "h"},
+      {"eval --alpha 2 --lambda 1 --theta 1 --integrator gk-tanh-sinh --panels 4", "panels"},
+      {"eval --alpha 2 --lambda 1 --theta 1 --integrator gauss-legendre --panels 0", "panels"},
       {"eval --alpha 2 --lambda 1", "theta"},
   };
   for (auto [args, parameter] : cases) {
@@ -54,8 +56,21 @@ TEST(CliEval, InvalidInputExitsWithStatusTwoAndOneLine) {
 TEST(CliEval, HelpIsUseful) {
   auto r = run_lac("eval --help");
   EXPECT_EQ(r.status, 0);
-  for (const char* opt : {"--alpha", "--lambda", "--theta", "--s", "--form", "--integrator", "--h", "--tol", "--points", "--format"})
+  for (const char* opt : {"--alpha", "--lambda", "--theta", "--s", "--form", "--integrator", "--h", "--tol", "--panels",
+                          "--points", "--format"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  // --integrator lists every registered method (the help comes from the registry).
+  for (const char* name : {"rk4", "rk45", "gauss-kronrod", "gauss-legendre", "gk-tanh-sinh", "igf"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name;
+}
+
+TEST(CliEval, EveryRegisteredMethodByName) {
+  for (const char* args : {"--integrator gauss-legendre --panels 4", "--integrator gk-tanh-sinh --tol 1e-12",
+                           "--integrator gk", "--integrator igf --tol 1e-11"}) {
+    auto r = run_lac(std::string("eval --alpha 2 --lambda 1 --theta 1.5 --format json ") + args);
+    ASSERT_EQ(r.status, 0) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("\"status\": \"ok\""), std::string::npos) << args << "\n" << r.out;
+  }
 }
 
 }  // namespace

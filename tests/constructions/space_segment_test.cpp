@@ -37,7 +37,7 @@ Vec3 reintegrated_end_tangent(const SpaceSegmentResult& r) {
   for (size_t i = 0; i < r.pieces.size(); ++i) {
     const SpacePiece& p = r.pieces[i];
     const LaSpaceCurve c(p.alpha, p.beta, p.lambda, p.omega, p.nu, p.type);
-    const FrenetResult fr = integrate_frenet(c, f, p.s_begin, p.s_end, FrenetOptions{FrenetMethod::rk45, 1e-13, 1e-14});
+    const FrenetResult fr = integrate_frenet(c, f, p.s_begin, p.s_end, OdeOptions{OdeMethod::rk45, 1e-13, 1e-14});
     EXPECT_EQ(fr.status, Status::ok);
     f = fr.frame;
   }

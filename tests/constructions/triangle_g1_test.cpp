@@ -356,7 +356,7 @@ TEST(PlanarSegments, IntegratorChoiceAgrees) {
   const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
   const G1Segment ref = solve_compound(t, -1, 1.5, 0.4);
   for (const char* name : {"gauss-kronrod", "rk45"}) {
-    const G1Segment g = solve_compound(t, -1, 1.5, 0.4, SegmentOptions{}, make_la_integrator(name));
+    const G1Segment g = solve_compound(t, -1, 1.5, 0.4, SegmentOptions{}, make_quadrature(name));
     ASSERT_TRUE(usable(g.status)) << name << " " << g.message;
     EXPECT_LE(rel(g.length, ref.length), 1e-10) << name;
     EXPECT_LE(rel(g.pieces[0].lambda, ref.pieces[0].lambda), 1e-9) << name;

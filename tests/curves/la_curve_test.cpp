@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "tests/support/reference_csv.hpp"
 
@@ -23,7 +23,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // reference table (auto form). These are the numbers README.md and results/ quote.
 struct Tolerance {
   const char* integrator;
-  IntegratorOptions options;
+  QuadratureOptions options;
   double max_relative_error;
 };
 const Tolerance kTolerances[] = {
@@ -189,7 +189,7 @@ TEST(LaClosedForms, CircleWhenLambdaIsZero) {
 // and its error estimate bounds the true error.
 TEST(LaPositions, IntegratorsMeetDocumentedAccuracy) {
   for (const auto& tol : kTolerances) {
-    const LaIntegrator method = make_la_integrator(tol.integrator, tol.options);
+    const AnyQuadrature method = make_quadrature(tol.integrator, tol.options);
     double worst = 0, worst_ratio_est = 1e300;
     std::string worst_case;
     int under_estimated = 0;
@@ -427,7 +427,7 @@ TEST(LaInvalidInput, ParametersOutsideTheirRanges) {
   // ρ overflows although θ is inside the domain: an error, never inf/NaN.
   expect_input_error([] { LaCurve(1.0, 1.0).frame_at(Parameter::theta, 800.0); }, "theta", "representable");
   expect_input_error([] { parse_form("arc"); }, "form", "theta, s, auto");
-  expect_input_error([] { make_la_integrator("euler"); }, "integrator", "valid:");
+  expect_input_error([] { make_quadrature("euler"); }, "integrator", "valid:");
 }
 
 TEST(LaInvalidInput, NoNanAtTheEdgesOfTheDomain) {

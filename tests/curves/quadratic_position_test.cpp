@@ -31,7 +31,7 @@ TEST(QuadraticPosition, RegistryMethodsAgree) {
   for (const auto& p : sets) {
     const QuadraticLaCurve c(p[0], p[1], p[2]);
     const auto ref = polyline(c, -0.2, 0.5, 8, make_quadrature("gauss-kronrod", {{}, 1e-14}));
-    for (const auto& [name, opts] : {std::pair{"rk4", IntegratorOptions{1e-3, {}}}, std::pair{"rk45", IntegratorOptions{{}, 1e-12}}}) {
+    for (const auto& [name, opts] : {std::pair{"rk4", QuadratureOptions{1e-3, {}}}, std::pair{"rk45", QuadratureOptions{{}, 1e-12}}}) {
       const auto got = polyline(c, -0.2, 0.5, 8, make_quadrature(name, opts));
       for (size_t k = 0; k < got.size(); ++k) {
         EXPECT_LE(std::abs(got[k].point.position - ref[k].point.position), kMethodAgreement) << name << " k=" << k;
@@ -42,6 +42,32 @@ TEST(QuadraticPosition, RegistryMethodsAgree) {
     const auto single = position_at(c, 0.5, GaussKronrod{});
     EXPECT_LE(std::abs(single.point.position - ref.back().point.position), 1e-13);
     EXPECT_DOUBLE_EQ(single.point.kappa, c.kappa_at_s(0.5));
+  }
+}
+
+// Every method of the quadrature registry at its defaults; igf, a closed form of the planar LA
+// curve only, is an InputError naming the integrator.
+TEST(QuadraticPosition, EveryRegisteredQuadratureAgreesAndIgfIsRejected) {
+  const QuadraticLaCurve c(1, 1, 1);
+  const auto ref = polyline(c, -0.2, 0.5, 8, GaussKronrod{});
+  for (const MethodInfo& m : quadrature_methods()) {
+    const AnyQuadrature method = make_quadrature(m.name);
+    if (m.applies_to != kAnyIntegrand) {
+      try {
+        polyline(c, -0.2, 0.5, 8, method);
+        ADD_FAILURE() << m.name << " accepted";
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.parameter(), "integrator");
+        EXPECT_NE(std::string(e.what()).find("planar LA curves in standard form only"), std::string::npos) << e.what();
+      }
+      EXPECT_THROW(position_at(c, 0.5, method), InputError);
+      continue;
+    }
+    const auto got = polyline(c, -0.2, 0.5, 8, method);
+    for (size_t k = 0; k < got.size(); ++k) {
+      EXPECT_LE(std::abs(got[k].point.position - ref[k].point.position), kMethodAgreement) << m.name << " k=" << k;
+      EXPECT_EQ(got[k].status, Status::ok) << m.name;
+    }
   }
 }
 

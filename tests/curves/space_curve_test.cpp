@@ -142,13 +142,13 @@ TEST(Frenet, MatchesMpmathReferenceForEveryMethod) {
   ASSERT_GE(rows.size(), 8u);
   struct M {
     const char* name;
-    FrenetOptions opt;
+    OdeOptions opt;
     double tolerance;
   };
-  const M methods[] = {{"magnus6 rtol 1e-12", {FrenetMethod::magnus6, 1e-12, 1e-13}, tol::kMagnusTight},
-                       {"magnus6 rtol 1e-10", {FrenetMethod::magnus6, 1e-10, 1e-11}, tol::kMagnusDefault},
-                       {"rk45 rtol 1e-12", {FrenetMethod::rk45, 1e-12, 1e-13}, tol::kRk45},
-                       {"rk4 h 1e-3", {FrenetMethod::rk4, 1e-12, 1e-13, 1e-3}, tol::kRk4}};
+  const M methods[] = {{"magnus6 rtol 1e-12", {OdeMethod::magnus6, 1e-12, 1e-13}, tol::kMagnusTight},
+                       {"magnus6 rtol 1e-10", {OdeMethod::magnus6, 1e-10, 1e-11}, tol::kMagnusDefault},
+                       {"rk45 rtol 1e-12", {OdeMethod::rk45, 1e-12, 1e-13}, tol::kRk45},
+                       {"rk4 h 1e-3", {OdeMethod::rk4, 1e-12, 1e-13, 1e-3}, tol::kRk4}};
   for (const M& m : methods) {
     double worst = 0, worst_orth = 0;
     long evals = 0;
@@ -172,8 +172,8 @@ TEST(Frenet, ConeEventIsTheFirstMeetingAndIsLocatedAccurately) {
     const LaSpaceCurve cv(c.a, c.b, c.l, c.o, c.nu, c.ty);
     const double hi = std::isfinite(cv.s_range().hi) ? cv.s_range().hi * (1 - 1e-9) : 6.0;
     for (double theta : {0.2, 0.5, 0.9}) {
-      for (FrenetMethod m : {FrenetMethod::magnus6, FrenetMethod::rk45, FrenetMethod::rk4}) {
-        FrenetOptions o{m, 1e-12, 1e-13, 1e-3};
+      for (OdeMethod m : {OdeMethod::magnus6, OdeMethod::rk45, OdeMethod::rk4}) {
+        OdeOptions o{m, 1e-12, 1e-13, 1e-3};
         const FrenetResult r = integrate_to_cone(cv, Frame3{}, 0, hi, theta, o);
         if (!r.met_cone) continue;
         worst = std::max(worst, std::abs(cone_angle_of(r.frame.p) - theta));
@@ -190,8 +190,8 @@ TEST(Frenet, ConeEventIsTheFirstMeetingAndIsLocatedAccurately) {
 TEST(Frenet, FrameStaysOrthonormalOverLongIntegrations) {
   const LaSpaceCurve cv(2, 1, 0.5, 0.6, 0.3, TorsionType::type1);  // strong torsion, several turns
   double worst = 0;
-  for (FrenetMethod m : {FrenetMethod::magnus6, FrenetMethod::rk45, FrenetMethod::rk4}) {
-    FrenetOptions o{m, 1e-10, 1e-11, 1e-2};
+  for (OdeMethod m : {OdeMethod::magnus6, OdeMethod::rk45, OdeMethod::rk4}) {
+    OdeOptions o{m, 1e-10, 1e-11, 1e-2};
     for (const Frame3& f : sample_frenet(cv, Frame3{}, 0, 20, 400, o)) worst = std::max(worst, f.orthonormality_error());
   }
   std::printf("worst orthonormality error over s in [0, 20]: %.2e\n", worst);
@@ -216,13 +216,13 @@ TEST(SpaceCurveInput, InvalidParametersNameTheParameter) {
   const LaSpaceCurve c(-1, 0, 1, 0.1, 1, TorsionType::type1);  // s < 1
   EXPECT_EQ(param([&] { integrate_frenet(c, Frame3{}, 0, 1.5); }), "s1");
   EXPECT_EQ(param([&] { integrate_to_cone(c, Frame3{}, 0, 0.5, 0.0); }), "cone_angle");
-  EXPECT_EQ(param([&] { integrate_frenet(c, Frame3{}, 0, 0.5, FrenetOptions{FrenetMethod::rk45, 0}); }), "rtol");
-  EXPECT_EQ(param([] { parse_frenet_method("euler"); }), "integrator");
+  EXPECT_EQ(param([&] { integrate_frenet(c, Frame3{}, 0, 0.5, OdeOptions{OdeMethod::rk45, 0}); }), "rtol");
+  EXPECT_EQ(param([] { parse_ode_method("euler"); }), "integrator");
 }
 
 TEST(Frenet, StepCapGivesAStatusNotAHang) {
   const LaSpaceCurve c(0, 0, 1, 0, 1e-6, TorsionType::type1);  // τ = 1e6: far more steps than the cap
-  FrenetOptions o{FrenetMethod::rk45, 1e-12, 1e-13};
+  OdeOptions o{OdeMethod::rk45, 1e-12, 1e-13};
   o.max_steps = 100;
   const FrenetResult r = integrate_frenet(c, Frame3{}, 0, 1, o);
   EXPECT_EQ(r.status, Status::max_iterations);

@@ -1,4 +1,4 @@
-// The igf closed form (integrators/igf.hpp, curves/planar/la_igf.hpp) against mpmath references:
+// The igf closed form (integrators/igf.hpp) against mpmath references:
 // tests/reference/igf_reference.csv (generator igf_reference.py: differences C(θ1) − C(θ0),
 // small steps, every α incl. near 1) and, when present, the project's la_reference.csv.
 #include <gtest/gtest.h>
@@ -13,8 +13,6 @@
 #include <string>
 
 #include "lac/common/error.hpp"
-#include "lac/curves/planar/la_igf.hpp"
-#include "lac/curves/planar/la_integrator.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/integrators/igf.hpp"
 #include "tests/support/reference_csv.hpp"
@@ -196,15 +194,15 @@ TEST(Igf, InvalidInput) {
 }
 
 TEST(Igf, Registry) {
-  const LaIntegrator m = make_la_integrator("igf", IntegratorOptions{std::nullopt, 1e-10});
+  const AnyQuadrature m = make_quadrature("igf", QuadratureOptions{std::nullopt, 1e-10});
   ASSERT_TRUE(std::holds_alternative<Igf>(m));
   EXPECT_EQ(std::get<Igf>(m).tol, 1e-10);
   EXPECT_EQ(name_of(m), "igf");
-  EXPECT_THROW(make_la_integrator("igf", IntegratorOptions{1e-3, std::nullopt}), InputError);
-  EXPECT_THROW(make_la_integrator("igf", IntegratorOptions{std::nullopt, -1.0}), InputError);
-  bool listed = false;
-  for (auto n : la_integrator_names()) listed = listed || n == "igf";
-  EXPECT_TRUE(listed);
+  EXPECT_THROW(make_quadrature("igf", QuadratureOptions{1e-3, std::nullopt}), InputError);
+  EXPECT_THROW(make_quadrature("igf", QuadratureOptions{std::nullopt, -1.0}), InputError);
+  const MethodInfo* info = find_method(quadrature_methods(), "igf");
+  ASSERT_NE(info, nullptr);
+  EXPECT_EQ(info->applies_to, "planar LA curves in standard form only");
 }
 
 }  // namespace

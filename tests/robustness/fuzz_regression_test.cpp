@@ -12,7 +12,7 @@
 
 #include "lac/common/error.hpp"
 #include "tests/support/run_cli.hpp"
-#include "lac/curves/planar/la_integrator.hpp"
+#include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/space/frenet.hpp"
 #include "lac/curves/space/la_space_curve.hpp"
 #include "lac/constructions/triangle_g1.hpp"
@@ -213,8 +213,8 @@ TEST(FuzzRegression, FrenetIntegrationNeverReturnsAUsableNan) {
   for (lac::TorsionType type : {lac::TorsionType::type1, lac::TorsionType::type2}) {
     // ρ overflows (κ = 0) and τ = 1/ν = inf on [1, 7]: the fixed-step rk4 state became NaN.
     const lac::LaSpaceCurve c(-5e-324, -2.30, DBL_MAX, 1, 5e-324, type);
-    for (lac::FrenetMethod m : {lac::FrenetMethod::rk4, lac::FrenetMethod::rk45, lac::FrenetMethod::magnus6}) {
-      lac::FrenetOptions o;
+    for (lac::OdeMethod m : {lac::OdeMethod::rk4, lac::OdeMethod::rk45, lac::OdeMethod::magnus6}) {
+      lac::OdeOptions o;
       o.method = m;
       const lac::FrenetResult r = lac::integrate_frenet(c, lac::Frame3{}, 1, 7, o);
       if (lac::usable(r.status)) {
@@ -225,8 +225,8 @@ TEST(FuzzRegression, FrenetIntegrationNeverReturnsAUsableNan) {
       }
     }
     if (type == lac::TorsionType::type1) {  // the saved input: rk4 must now fail instead of returning NaN
-      lac::FrenetOptions o;
-      o.method = lac::FrenetMethod::rk4;
+      lac::OdeOptions o;
+      o.method = lac::OdeMethod::rk4;
       EXPECT_EQ(lac::integrate_frenet(c, lac::Frame3{}, 1, 7, o).status, lac::Status::numerical_failure);
     }
   }
@@ -245,7 +245,7 @@ TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
   const lac::G1SpaceSpec spec{1.000000000000001, 1e300, 0.0, lac::TorsionType::type2};
   lac::SpaceSegmentOptions o;
   o.solver = lac::NonlinearMethod::newton;
-  o.frenet.method = lac::FrenetMethod::rk4;
+  o.frenet.method = lac::OdeMethod::rk4;
   const lac::SpaceSegmentResult r = lac::solve_g1_space_segment(ends, spec, o);
   EXPECT_EQ(r.status, lac::Status::max_iterations) << r.message;
   EXPECT_NE(r.message.find("max_ode_evaluations"), std::string::npos) << r.message;
