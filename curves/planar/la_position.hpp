@@ -332,4 +332,16 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   return out;
 }
 
+/// The arc-length forms every curve model offers (PlanarCurveModel, curves/curve.hpp).
+template <class M>
+PositionResult position_at(const LaCurve& c, double s, const M& method) {
+  return position_at(c, Parameter::s, s, method);
+}
+template <class M>
+std::vector<PositionResult> polyline(const LaCurve& c, double s0, double s1, int n, const M& method) {
+  return polyline(c, Parameter::s, s0, s1, n, method);
+}
+
+static_assert(PlanarCurveModel<LaCurve, GaussKronrod>);
+
 }  // namespace lac

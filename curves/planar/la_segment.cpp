@@ -172,7 +172,7 @@ IntegralResult<std::complex<double>> integrate_tangent_gl(const LaLaw& law, cons
     r.message = "gauss-legendre: non-finite integrand value";
   } else if (r.error_estimate > m.tol * std::abs(r.value) && r.error_estimate > 100 * DBL_EPSILON * l1) {
     r.status = Status::tolerance_not_met;
-    r.message = "gauss-legendre: error estimate " + format_number(r.error_estimate) + " above tolerance with " +
+    r.message = "gauss-legendre: error estimate " + format_number(r.error_estimate) + " above tolerance with at least " +
                 std::to_string(m.panels) + " panels per piece; raise panels";
   }
   return r;

@@ -104,9 +104,10 @@ class LaSegment {
 /// (detail::tangent_plan) apply to every method; pieces turning more than 64 rad are split
 /// further, and the parts share the method's budget (R6). GaussLegendre runs the fast path of
 /// detail::integrate_tangent (per-radian panels, at most 64, cached node powers; its value bit for
-/// bit) with the 10-point rule on the same panels as error estimate: beyond 1024 rad of turning on
-/// a piece it gives status max_iterations and a NaN value. The estimate adds the rounding of the
-/// integrand, ε(1 + max|φ|)|u1 − u0|.
+/// bit) with the 10-point rule on twice as many panels as error estimate (status
+/// tolerance_not_met above GaussLegendre::tol relative); beyond 1024 rad of turning on a piece it
+/// gives status max_iterations and a NaN value. Every estimate adds the rounding of the integrand,
+/// ε(1 + max|φ|)|u1 − u0|.
 template <QuadratureMethod M>
 IntegralResult<std::complex<double>> integrate_tangent(const LaSegment& seg, double u0, double u1, const M& method);
 

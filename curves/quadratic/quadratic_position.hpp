@@ -96,4 +96,6 @@ std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s
 PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
 
+static_assert(PlanarCurveModel<QuadraticLaCurve, GaussKronrod>);
+
 }  // namespace lac

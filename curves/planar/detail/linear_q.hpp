@@ -41,9 +41,9 @@ inline constexpr double kMaxResolvedTurning = 1024.0;
 /// it, at most 64 panels: a piece turning more than kMaxResolvedTurning cannot be resolved
 /// by them and gives NaN (the solvers treat it as a failed evaluation: no curve, fast,
 /// instead of seconds of cos/sin of huge angles). `evaluations` is incremented by the
-/// number of integrand calls. With `coarse`, the 10-point rule on the same panels is added to
-/// *coarse (its difference from the result is GaussLegendre's error estimate; 10 more
-/// evaluations per panel, counted).
+/// number of integrand calls. With `coarse`, *coarse receives the 10-point rule on twice as many
+/// panels (its difference from the result is the error estimate of LaSegment's GaussLegendre
+/// path; 20 more evaluations per panel, counted).
 std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, long& evaluations, int panels = 1,
                                        std::complex<double>* coarse = nullptr);
 
