@@ -42,6 +42,19 @@ long piecewise_polyline_budget(const M& m, long n) {
   else return detail::polyline_budget(m, n);
 }
 
+/// Adds one quadrature call's result (times `sign`) to a running total of several: value, error
+/// estimate, evaluations, and the first status that is not ok.
+template <class V>
+void add_part(IntegralResult<V>& total, const IntegralResult<V>& part, double sign = 1.0) {
+  total.value += sign * part.value;
+  total.error_estimate += part.error_estimate;
+  total.evaluations += part.evaluations;
+  if (part.status != Status::ok && total.status == Status::ok) {
+    total.status = part.status;
+    total.message = part.message;
+  }
+}
+
 inline void merge_status(PositionResult& r, Status s, const std::string& message) {
   if (s != Status::ok && r.status == Status::ok) {
     r.status = s;

@@ -175,14 +175,7 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
                     "] (pieces of " + format_number(kMaxTurningPerPiece) + " rad); raise the method's budget";
         return false;
       }
-      auto part = form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi);
-      r.value += part.value;
-      r.error_estimate += part.error_estimate;
-      r.evaluations += part.evaluations;
-      if (part.status != Status::ok && r.status == Status::ok) {
-        r.status = part.status;
-        r.message = part.message;
-      }
+      add_part(r, form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi));
       return true;
     });
     const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;

@@ -1,5 +1,8 @@
 #pragma once
 // Templates of la_segment.hpp: the tangent integral of an LA segment with any quadrature method.
+// (la_segment.hpp includes this file at its end; included alone, it includes la_segment.hpp first.)
+#include "lac/curves/planar/la_segment.hpp"
+
 #include <complex>
 #include <concepts>
 #include <limits>
@@ -12,8 +15,6 @@
 #include "lac/integrators/quadrature.hpp"
 
 namespace lac {
-class LaSegment;
-
 namespace detail {
 
 /// Most turning given to one call of a method: a fixed 21-node panel over many turns of e^{iφ}
@@ -69,15 +70,7 @@ IntegralResult<std::complex<double>> integrate_tangent_with(const LaLaw& law, co
                     " evaluations (parts of " + format_number(kMaxTurningPerPart) + " rad); raise the method's budget";
         return r;
       }
-      const IntegralResult<std::complex<double>> part =
-          p.graded ? m.integrate(graded, ends[k], ends[k + 1]) : m.integrate(plain, ends[k], ends[k + 1]);
-      r.value += p.sign * part.value;
-      r.error_estimate += part.error_estimate;
-      r.evaluations += part.evaluations;
-      if (part.status != Status::ok && r.status == Status::ok) {
-        r.status = part.status;
-        r.message = part.message;
-      }
+      add_part(r, p.graded ? m.integrate(graded, ends[k], ends[k + 1]) : m.integrate(plain, ends[k], ends[k + 1]), p.sign);
     }
   }
   return r;

@@ -1,5 +1,8 @@
 #pragma once
 // Templates of planar_curve.hpp (positions, polylines, joints, bounding box with any quadrature).
+// (planar_curve.hpp includes this file at its end; included alone, it includes planar_curve.hpp first.)
+#include "lac/curves/planar/planar_curve.hpp"
+
 #include <algorithm>
 #include <complex>
 #include <limits>
@@ -93,7 +96,9 @@ template <QuadratureMethod M>
 BoundingBox PlanarCurve::bounding_box(const M& method) const {
   check_s(0.0, "s");
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  BoundingBox box{{kInf, kInf}, {-kInf, -kInf}};
+  BoundingBox box;
+  box.lo = {kInf, kInf};
+  box.hi = {-kInf, -kInf};
   const auto include = [&box](std::complex<double> z) {
     box.lo = {std::min(box.lo.real(), z.real()), std::min(box.lo.imag(), z.imag())};
     box.hi = {std::max(box.hi.real(), z.real()), std::max(box.hi.imag(), z.imag())};
