@@ -68,6 +68,7 @@ std::optional<double> LaSegment::inflection_s() const {
 
 // κ = K(q)/ℓ with q linear in u = ua + s/ℓ: dκ/ds = K'(q) c0/ℓ².
 double LaSegment::dkappa_ds_at(double s) const {
+  check_s(s, "s");
   return law_.dK(q_at(u_at(s))) * q_.slope() / (scale() * scale());
 }
 

@@ -68,8 +68,15 @@ class LaSegment {
   // In user arc length s ∈ [0, length()] (closed forms, no integration).
   double length() const { return length_; }
   Interval s_domain() const { return {0.0, length_, true, true}; }
-  double kappa_at(double s) const { return curvature_per_u(u_at(s)) / scale(); }  ///< signed
-  double theta_at(double s) const { return angle_ + phi_at(u_at(s)); }
+  /// Signed κ, θ and dκ/ds at s (InputError unless s ∈ [0, length()]).
+  double kappa_at(double s) const {
+    check_s(s, "s");
+    return curvature_per_u(u_at(s)) / scale();
+  }
+  double theta_at(double s) const {
+    check_s(s, "s");
+    return angle_ + phi_at(u_at(s));
+  }
   double dkappa_ds_at(double s) const;
   /// s, θ, κ and ρ = 1/κ (±inf at an inflection); the position is not computed (0).
   CurvePoint frame_at(double s) const;
