@@ -41,6 +41,13 @@ std::vector<Row> reference_rows() {
   return rows;
 }
 
+// Each reference segment once.
+std::map<int, LaSegment> reference_segments() {
+  std::map<int, LaSegment> segments;
+  for (const Row& r : reference_rows()) segments.emplace(r.id, r.seg);
+  return segments;
+}
+
 std::string describe(const Row& r) {
   const LaSegment& g = r.seg;
   char buf[200];
@@ -71,9 +78,7 @@ TEST(LaSegment, ClosedFormsMatchReference) {
 
 // θ' = κ and κ' = dκ/ds: θ(s) − θ(0) against Gauss–Kronrod on κ, dκ/ds against a central difference.
 TEST(LaSegment, ClosedFormsMatchTheirDefinitions) {
-  std::map<int, LaSegment> segments;
-  for (const Row& r : reference_rows()) segments.emplace(r.id, r.seg);
-  for (const auto& [id, seg] : segments) {
+  for (const auto& [id, seg] : reference_segments()) {
     SCOPED_TRACE("case " + std::to_string(id));
     const double L = seg.length();
     for (double f : {0.3, 0.7, 1.0}) {
@@ -173,9 +178,7 @@ TEST(LaSegment, MirrorIsExact) {
 
 // Reversal: the same points, traversed from the end: κ → −κ, θ → θ + π.
 TEST(LaSegment, ReversalTraversesTheSameCurve) {
-  std::map<int, LaSegment> segments;
-  for (const Row& r : reference_rows()) segments.emplace(r.id, r.seg);
-  for (const auto& [id, seg] : segments) {
+  for (const auto& [id, seg] : reference_segments()) {
     SCOPED_TRACE("case " + std::to_string(id));
     const double L = seg.length();
     const auto end = position_at(seg, L, GaussKronrod{});
