@@ -67,9 +67,9 @@ BENCHMARK(BM_G2_paper_grid)->Arg(0)->Unit(benchmark::kMillisecond);
 // The initial estimates alone (normalized problems of the same set).
 void run_start(benchmark::State& state, bool grid) {
   const auto set = g2_set(kAlphas[state.range(0)]);
-  std::vector<detail::NormalizedG2> norm;
+  std::vector<hermite::detail::NormalizedG2> norm;
   for (const auto& p : set) {
-    detail::NormalizedG2 n;
+    hermite::detail::NormalizedG2 n;
     n.law = {p.alpha, p.start.kappa < 0 ? -1.0 : 1.0};
     n.phi_s = p.start.theta;
     n.phi_e = p.end.theta;
@@ -80,7 +80,7 @@ void run_start(benchmark::State& state, bool grid) {
   size_t i = 0;
   for (auto _ : state) {
     const auto& n = norm[i++ % norm.size()];
-    const auto e = grid ? detail::bezier_grid_start(n, n.law.alpha) : detail::fast_start(n);
+    const auto e = grid ? hermite::detail::bezier_grid_start(n, n.law.alpha) : hermite::detail::fast_start(n);
     benchmark::DoNotOptimize(e.h);
   }
 }

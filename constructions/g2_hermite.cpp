@@ -64,11 +64,11 @@ CurveSample TripleLaCurve::at(double S) const {
   CurveSample out;
   for (const auto& seg : segments) {
     if (S > seg.ub && &seg != &segments.back()) {
-      sum += detail::integrate_tangent(law, seg, evals);
+      sum += lac::detail::integrate_tangent(law, seg, evals);
       continue;
     }
-    const detail::LinearQSegment part{seg.ua, S, seg.qa, seg.q_at(S), seg.phi_a};
-    if (S > seg.ua) sum += detail::integrate_tangent(law, part, evals);
+    const lac::detail::LinearQ part{seg.ua, S, seg.qa, seg.q_at(S), seg.phi_a};
+    if (S > seg.ua) sum += lac::detail::integrate_tangent(law, part, evals);
     out.theta = seg.phi_at(law, S) + chord_angle;
     out.kappa = seg.kappa_at(law, S) / (h * chord);
     break;
@@ -242,9 +242,9 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   // which cannot overflow.
   std::complex<double> sum{};
   if (o.verify) {
-    for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent_reference(p.law, seg);
+    for (const auto& seg : res.curve.segments) sum += lac::detail::integrate_tangent_reference(p.law, seg);
   } else {
-    for (const auto& seg : res.curve.segments) sum += detail::integrate_tangent(p.law, seg, res.evaluations);
+    for (const auto& seg : res.curve.segments) sum += lac::detail::integrate_tangent(p.law, seg, res.evaluations);
   }
   res.residual_position = r * std::abs(so.h * sum - 1.0);
   const auto& s0 = res.curve.segments.front();

@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "lac/common/status.hpp"
-#include "lac/curves/planar/linear_q.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
 
 namespace lac::hermite {
 
@@ -94,8 +94,8 @@ struct CurveSample {
 /// The solved curve: three linear-q segments in the normalized frame (start at 0, end at
 /// (1, 0)) and the similarity back to the user's frame.
 struct TripleLaCurve {
-  detail::LaLaw law;
-  std::array<detail::LinearQSegment, 3> segments{};  ///< in S, q of κ̃ = κh
+  LaLaw law;
+  std::array<lac::detail::LinearQ, 3> segments{};  ///< in S, q of κ̃ = κh
   double h = 1;                                      ///< length in chord units
   std::complex<double> origin;                       ///< user start point
   double chord = 1;                                  ///< |P1 − P0|

@@ -27,7 +27,7 @@ double standard_length(double alpha, double lambda, double phi_d, bool s_shaped)
   return std::expm1(p * std::log1p(x)) / (lambda * alpha);
 }
 
-detail::LinearQSegment standard_segment(double alpha, double lambda, double length) {
+lac::detail::LinearQ standard_segment(double alpha, double lambda, double length) {
   // q = 1 + αΛs: κ = 1 at s = 0, zero at the inflection s0 = −1/(Λα) (Eq. 12).
   return {0.0, length, 1.0, 1.0 + alpha * lambda * length, 0.0};
 }
@@ -68,8 +68,8 @@ CurveSample SCurveResult::at(double t) const {
   const double L = standard.ub;
   const double s = (reversed ? 1.0 - t : t) * L;
   long evals = 0;
-  const detail::LinearQSegment part{0.0, s, standard.qa, standard.q_at(s), 0.0};
-  std::complex<double> z = s > 0 ? detail::integrate_tangent(law, part, evals) : std::complex<double>{};
+  const lac::detail::LinearQ part{0.0, s, standard.qa, standard.q_at(s), 0.0};
+  std::complex<double> z = s > 0 ? lac::detail::integrate_tangent(law, part, evals) : std::complex<double>{};
   if (mirrored) z = std::conj(z);
   CurveSample out;
   out.S = t;
@@ -116,7 +116,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
 
   SCurveResult res;
   res.alpha = alpha;
-  res.law = detail::LaLaw{alpha, 1.0};
+  res.law = LaLaw{alpha, 1.0};
   auto finish = [&](Status st, std::string msg) {
     res.status = st;
     res.message = std::move(msg);
@@ -166,7 +166,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   auto g = [&](double lambda) {
     const double L = standard_length(alpha, lambda, phi_d, s_shaped);
     if (!std::isfinite(L)) return std::numeric_limits<double>::quiet_NaN();
-    const auto end = detail::integrate_tangent(res.law, standard_segment(alpha, lambda, L), res.evaluations);
+    const auto end = lac::detail::integrate_tangent(res.law, standard_segment(alpha, lambda, L), res.evaluations);
     return std::arg(end) - phi_e;
   };
   double g_lo = g(lo), g_hi = g(hi);
@@ -205,7 +205,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   const double L = standard_length(alpha, lambda, phi_d, s_shaped);
   res.lambda = lambda;
   res.standard = standard_segment(alpha, lambda, L);
-  const auto end = detail::integrate_tangent(res.law, res.standard, res.evaluations);
+  const auto end = lac::detail::integrate_tangent(res.law, res.standard, res.evaluations);
   // Similarity onto the user's points: |B − A| / |end| in the normalized frame, times ext.
   const double scale_normalized = std::abs(B - A) / std::abs(end);
   res.scale = ext * scale_normalized;
@@ -230,7 +230,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
                   "the curve's length, curvature or extent in user units is beyond the double range");
   }
   // Residuals with the independent tanh-sinh evaluation, in the normalized frame (no overflow).
-  std::complex<double> z = o.verify ? detail::integrate_tangent_reference(res.law, res.standard) : end;
+  std::complex<double> z = o.verify ? lac::detail::integrate_tangent_reference(res.law, res.standard) : end;
   if (res.mirrored) z = std::conj(z);
   res.residual_position = ext * std::abs(A + res.rotation * scale_normalized * z - B);
   // End angles from φ's closed form (004 Eq. 5 in linear-q form) at both ends; at(t) would also

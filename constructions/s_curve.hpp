@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "lac/common/status.hpp"
-#include "lac/curves/planar/linear_q.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 
 namespace lac::hermite {
@@ -56,8 +56,8 @@ struct SCurveResult {
 
   // Geometry: the standard-form segment (variable s, from 0 to its length) and the
   // similarity onto the user's points.
-  detail::LaLaw law;
-  detail::LinearQSegment standard;
+  LaLaw law;
+  lac::detail::LinearQ standard;
   bool mirrored = false;                ///< y → −y applied in the normalized frame
   bool reversed = false;                ///< the standard form runs from P3 to P0
   std::complex<double> origin;          ///< user point where the standard form starts

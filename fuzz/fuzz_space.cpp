@@ -80,7 +80,7 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
       const std::string what = "LaSpaceCurve " + spec_text + " lambda " + show(lambda) + " nu " + show(nu);
       std::optional<LaSpaceCurve> c;
       if (!guarded(what, [&] { c.emplace(spec.alpha0, spec.beta0, lambda, spec.omega0, nu, spec.type); })) return 0;
-      const SRange range = c->s_range();
+      const Interval range = c->s_range();
       if (std::isnan(range.lo) || std::isnan(range.hi) || !(range.lo < range.hi))
         lac::fuzz::finding("NAN", what + ": empty or NaN s_range");
       const std::string at = what + " s " + show(s0);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lac/common/error.hpp"
+#include "lac/common/numeric.hpp"
 #include "lac/special/incomplete_gamma.hpp"
 
 namespace lac {
@@ -34,7 +35,6 @@ cplx expm1c(cplx w) {
   return {std::expm1(w.real()) * std::cos(w.imag()) - 2.0 * s * s, std::exp(w.real()) * std::sin(w.imag())};
 }
 cplx expm1c_ratio(cplx w) { return w == cplx(0.0, 0.0) ? cplx(1.0) : expm1c(w) / w; }
-double expm1_ratio(double x) { return x == 0 ? 1.0 : std::expm1(x) / x; }
 
 bool finite(cplx w) { return std::isfinite(w.real()) && std::isfinite(w.imag()); }
 

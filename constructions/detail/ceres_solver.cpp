@@ -20,7 +20,7 @@ struct TripleLaResidual {
   bool operator()(const double* x, double* r) const {
     const double h = std::exp(x[0]);
     const double S[4] = {0.0, kS1, kS2, 1.0};
-    std::array<LinearQSegment, 3> seg;
+    std::array<lac::detail::LinearQ, 3> seg;
     for (int i = 0; i < 3; ++i) {
       const double c0 = x[1 + 3 * i], c1 = x[2 + 3 * i], psi = x[3 + 3 * i];
       seg[i] = {S[i], S[i + 1], c0 * S[i] + c1, c0 * S[i + 1] + c1, psi};
@@ -37,7 +37,7 @@ struct TripleLaResidual {
     r[6] = seg[0].phi_b(p->law) - seg[1].phi_a;            // Eq. (30)
     r[7] = seg[1].phi_b(p->law) - seg[2].phi_a;            // Eq. (31)
     std::complex<double> sum{};
-    for (const auto& s : seg) sum += integrate_tangent(p->law, s, *evaluations);
+    for (const auto& s : seg) sum += lac::detail::integrate_tangent(p->law, s, *evaluations);
     r[8] = h * sum.real() - 1.0;  // Eq. (32)
     r[9] = h * sum.imag();        // Eq. (33)
     for (int k = 0; k < kUnknowns; ++k)

@@ -16,10 +16,10 @@ double z_of_q(const NormalizedG2& p, double q) { return p.law.alpha > 0 ? -std::
 
 }  // namespace
 
-std::array<LinearQSegment, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2) {
+std::array<lac::detail::LinearQ, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2) {
   const double q0 = p.law.q_of_kappa(p.kappa_s * h);
   const double q3 = p.law.q_of_kappa(p.kappa_e * h);
-  std::array<LinearQSegment, 3> seg;
+  std::array<lac::detail::LinearQ, 3> seg;
   seg[0] = {0.0, kS1, q0, q1, p.phi_s};
   seg[1] = {kS1, kS2, q1, q2, seg[0].phi_b(p.law)};
   seg[2] = {kS2, 1.0, q2, q3, seg[1].phi_b(p.law)};
@@ -29,7 +29,7 @@ std::array<LinearQSegment, 3> build_segments(const NormalizedG2& p, double h, do
 std::array<double, 3> residuals(const NormalizedG2& p, double h, double q1, double q2, long& evaluations) {
   const auto seg = build_segments(p, h, q1, q2);
   std::complex<double> sum{};
-  for (const auto& s : seg) sum += integrate_tangent(p.law, s, evaluations);
+  for (const auto& s : seg) sum += lac::detail::integrate_tangent(p.law, s, evaluations);
   return {seg[2].phi_b(p.law) - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
 }
 
@@ -68,7 +68,7 @@ StartEstimate fast_start(const NormalizedG2& p) {
     e.k2 = k(1);
     const auto seg = build_segments(c, e.h, e.k1, e.k2);
     std::complex<double> sum{};
-    for (const auto& s : seg) sum += integrate_tangent(clothoid, s, e.evaluations);
+    for (const auto& s : seg) sum += lac::detail::integrate_tangent(clothoid, s, e.evaluations);
     if (!(sum.real() > 0.05) || !std::isfinite(sum.real())) break;  // keep the last usable h
     const double h_new = 1.0 / sum.real();
     e.k1 *= h_new / e.h;

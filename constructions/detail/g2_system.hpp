@@ -5,7 +5,7 @@
 #include <string>
 
 #include "lac/common/status.hpp"
-#include "lac/curves/planar/linear_q.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 
 namespace lac::hermite::detail {
@@ -31,7 +31,7 @@ struct SolverOutcome {
 };
 
 /// The three segments for length h and joint values q1, q2 (q0, q3 from the end curvatures).
-std::array<LinearQSegment, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2);
+std::array<lac::detail::LinearQ, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2);
 
 /// Normalized residuals: [φ(1) − φe, h∫sin φ dS, h∫cos φ dS − 1]; non-finite when the
 /// segments are not representable.

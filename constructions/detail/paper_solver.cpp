@@ -98,7 +98,7 @@ struct PaperSolver {
     if (!c10) return e;
     e.c10 = *c10;
     const auto seg = build_segments(p, h, q0 + *c10 * kS1, q2);
-    for (const auto& s : seg) e.integral += integrate_tangent(p.law, s, evaluations);
+    for (const auto& s : seg) e.integral += lac::detail::integrate_tangent(p.law, s, evaluations);
     e.g = e.integral.imag();
     return e;
   }

@@ -43,8 +43,7 @@ double LaCurve::log_rho_at_theta(double theta) const {
 
 double LaCurve::log_rho_at_s(double s) const {
   check(Parameter::s, s, "s");
-  const double x = lambda_ * s;
-  return representable(x * log1p_ratio(alpha_ * x), false, *this, "s", s);
+  return representable(log_rho_at_s_unchecked(s), false, *this, "s", s);
 }
 
 double LaCurve::rho_at_theta(double theta) const {
@@ -82,7 +81,7 @@ double LaCurve::theta_at_log_rho(double log_rho) const {
 double LaCurve::s_at_log_rho(double log_rho) const {
   if (!(lambda_ > 0)) throw_input_error("LaCurve::s_at_log_rho", "lambda", lambda_, "(0, inf) (rho is constant when lambda = 0)");
   require_finite("LaCurve::s_at_log_rho", "log_rho", log_rho);
-  const double s = log_rho / lambda_ * expm1_ratio(alpha_ * log_rho);
+  const double s = s_at_log_rho_unchecked(log_rho);
   if (!std::isfinite(s) || !s_domain().contains(s))
     throw_input_error("LaCurve::s_at_log_rho", "log_rho", log_rho, "values reached inside the s domain");
   return s;

@@ -13,23 +13,10 @@
 #include <limits>
 #include <span>
 
+#include "lac/common/numeric.hpp"
+#include "lac/curves/curve.hpp"
+
 namespace lac {
-
-/// An open interval (lo, hi); infinite ends are ±inf.
-struct Interval {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool contains(double t) const { return t > lo && t < hi; }
-};
-
-/// A point of a planar curve with its Frenet data. tangent = (cos θ, sin θ).
-struct CurvePoint {
-  double s = 0;
-  double theta = 0;
-  double rho = 1;    ///< radius of curvature (> 0; the curve turns left)
-  double kappa = 1;  ///< curvature 1/ρ
-  std::complex<double> position{};
-};
 
 /// Which parameter a value refers to.
 enum class Parameter { theta, s };
@@ -67,24 +54,35 @@ class LaCurve {
   /// Throws InputError naming `name` and the valid range unless t is inside the domain.
   void check(Parameter p, double t, const char* name) const;
 
-  /// Hot-path forms without the domain check, for integrands (t must be inside the domain).
+  /// Hot-path forms without the domain check, for integrands and for the laws of other curve
+  /// models (t must be inside the domain; the result may be non-finite where it is not
+  /// representable).
   double log_rho_at_theta_unchecked(double theta) const {
     const double x = lambda_ * theta;
     return x * log1p_ratio((alpha_ - 1.0) * x);
+  }
+  double log_rho_at_s_unchecked(double s) const {
+    const double x = lambda_ * s;
+    return x * log1p_ratio(alpha_ * x);
   }
   double theta_at_s_unchecked(double s) const {
     double theta = 0;
     log_rho_and_other(Parameter::s, s, theta);
     return theta;
   }
-
-  /// g(x) = log1p(x)/x and h(y) = expm1(y)/y, both continuous (= 1) at 0.
-  static double log1p_ratio(double x) { return x == 0 ? 1.0 : std::log1p(x) / x; }
-  static double expm1_ratio(double y) { return y == 0 ? 1.0 : std::expm1(y) / y; }
+  double s_at_theta_unchecked(double theta) const {
+    double s = 0;
+    log_rho_and_other(Parameter::theta, theta, s);
+    return s;
+  }
+  /// s where log ρ is reached: (log ρ / Λ) h(α log ρ) (Λ > 0).
+  double s_at_log_rho_unchecked(double log_rho) const { return log_rho / lambda_ * expm1_ratio(alpha_ * log_rho); }
 
   /// Everything but the position, at θ or s. Throws InputError when ρ, s or θ is not
   /// representable in double there (overflow near an open end of the domain).
   CurvePoint frame_at(Parameter p, double t) const;
+  /// frame_at(Parameter::s, s): the arc-length form every curve model offers.
+  CurvePoint frame_at(double s) const { return frame_at(Parameter::s, s); }
 
   /// frame_at for a t already known to lie inside the open domain (e.g. between the checked ends
   /// of a polyline): no domain check, but still an InputError where the point is not

@@ -15,19 +15,12 @@
 
 #include "lac/common/error.hpp"
 #include "lac/common/status.hpp"
+#include "lac/curves/detail/polyline.hpp"
 #include "lac/curves/planar/la_curve.hpp"
 #include "lac/integrators/quadrature.hpp"
 #include "lac/integrators/registry.hpp"
 
 namespace lac {
-
-/// Which integral represents the position. `automatic` picks per interval (see resolve_form).
-enum class Form { theta, s, automatic };
-
-constexpr std::string_view to_string(Form f) {
-  return f == Form::theta ? "theta" : f == Form::s ? "s" : "auto";
-}
-Form parse_form(std::string_view text);  // "theta" | "s" | "auto"; InputError otherwise
 
 /// A closed-form position method: C(θ1) − C(θ0) of the standard-form curve (α, Λ), e.g. Igf.
 template <class M>
@@ -47,15 +40,6 @@ inline Form resolve_form(const LaCurve& c, double theta_a, double theta_b, Form 
   if (c.lambda() > 0 && c.alpha() <= 0.5 && std::max(theta_a, theta_b) > 0) return Form::s;
   return Form::theta;
 }
-
-struct PositionResult {
-  CurvePoint point;
-  double error_estimate = 0;  ///< absolute, on the position
-  long evaluations = 0;       ///< integrand evaluations (cumulative along a polyline)
-  Status status = Status::ok;
-  std::string message;
-  Form form = Form::theta;    ///< form actually used
-};
 
 namespace detail {
 
@@ -163,27 +147,6 @@ void for_each_subpiece(const LaCurve& c, Form form, double a, double b, Visit&& 
   }
 }
 
-/// Evaluation budget of one position call made of several quadrature calls (a call that turns
-/// more than kMaxTurningPerPiece): the method's own per-call budget, so that up to 10^6 pieces
-/// cannot multiply it (R6). Rk4 needs none here: one Rk4Sweep spans all pieces. A method without
-/// a budget of its own (GaussLegendre: fixed cost per call; GkTanhSinh: bounded depth and levels)
-/// gets Gauss–Kronrod's default one.
-template <class M>
-long evaluation_budget(const M&) {
-  return 21 * (2 * GaussKronrod{}.max_intervals + 1);
-}
-inline long evaluation_budget(const Rk45& m) { return 6 * m.max_steps + 1; }
-inline long evaluation_budget(const GaussKronrod& m) { return 21 * (2 * m.max_intervals + 1); }
-
-/// Evaluations a polyline of n points may spend in all: one position call's budget plus an
-/// allowance of 64 Kronrod panels per point (dense polylines still work), so that its n pieces
-/// cannot multiply the per-call budget. A closed form counts series terms: 10 max_pieces + 1000 n.
-template <class M>
-long polyline_budget(const M& m, long n) {
-  if constexpr (requires { m.max_pieces; }) return 10 * m.max_pieces + 1000 * n;
-  return evaluation_budget(m) + 64 * 21 * n;
-}
-
 /// ∫ over [a, b] in the variable of `form` (θ or s); a closed form always works in θ.
 /// A non-finite error estimate makes the result a numerical_failure, never a usable value.
 template <class M>
@@ -218,14 +181,7 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
                     "] (pieces of " + format_number(kMaxTurningPerPiece) + " rad); raise the method's budget";
         return false;
       }
-      auto part = form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi);
-      r.value += part.value;
-      r.error_estimate += part.error_estimate;
-      r.evaluations += part.evaluations;
-      if (part.status != Status::ok && r.status == Status::ok) {
-        r.status = part.status;
-        r.message = part.message;
-      }
+      add_part(r, form == Form::s ? m.integrate(SFormIntegrand{&c}, lo, hi) : m.integrate(ThetaFormIntegrand{&c}, lo, hi));
       return true;
     });
     const double theta_a = form == Form::s ? c.theta_at_s(a) : a, theta_b = form == Form::s ? c.theta_at_s(b) : b;
@@ -243,9 +199,12 @@ IntegralResult<std::complex<double>> integrate_piece(const LaCurve& c, const M& 
 /// shared end is computed once (2 new evaluations per step), and the error estimate is the
 /// sweep's Richardson estimate plus integrand_rounding over the range covered so far.
 /// `frames_in_form`: the points' parameter is the integration variable, so f can take ρ or θ at
-/// a piece end from its frame (F::set_known).
+/// a piece end from its frame (F::set_known). Once the step budget is spent, the remaining points
+/// hold the last computed position with status max_iterations (PositionResult). Returns the index
+/// of the first point whose running sum is not finite (out.size() if none): the sweep cannot go
+/// on from there, polyline continues piece by piece.
 template <class F>
-void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in_form, std::vector<PositionResult>& out) {
+size_t polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in_form, std::vector<PositionResult>& out) {
   Rk4Sweep<std::complex<double>> sweep(m);
   const double first = form == Form::s ? out.front().point.s : out.front().point.theta;
   const double last = form == Form::s ? out.back().point.s : out.back().point.theta;
@@ -278,7 +237,7 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in
       piece += sweep.advance(f, lo, hi);
       return sweep.status() == Status::ok;
     });
-    pos += piece;
+    if (sweep.status() == Status::ok) pos += piece;  // a piece cut short by the budget is not added
     prev = next;
     if (r.point.theta < theta_lo || r.point.theta > theta_hi) {
       theta_lo = std::min(theta_lo, r.point.theta);
@@ -296,29 +255,10 @@ void polyline_rk4(const LaCurve& c, const Rk4& m, Form form, F f, bool frames_in
     r.error_estimate = sweep.status() != Status::ok ? std::numeric_limits<double>::infinity()
                                                     : sweep.error_estimate() + std::numeric_limits<double>::epsilon() *
                                                                                    (1 + log_rho_max + std::max(-theta_lo, theta_hi)) * length;
-    if (r.status == Status::ok && !(std::isfinite(r.error_estimate) && std::isfinite(pos.real()) && std::isfinite(pos.imag()))) {
-      r.status = Status::numerical_failure;
-      r.message = "non-finite position or error estimate";
-    }
+    if (r.status == Status::ok && !(std::isfinite(r.error_estimate) && std::isfinite(pos.real()) && std::isfinite(pos.imag())))
+      return k;
   }
-}
-
-/// Whether a polyline may integrate its next piece: false once `acc` has spent `budget`
-/// evaluations, which makes it max_iterations with a message naming the budget.
-inline bool within_polyline_budget(PositionResult& acc, long budget) {
-  if (acc.evaluations < budget) return true;
-  if (acc.status != Status::max_iterations)
-    acc.message = "evaluation budget " + std::to_string(budget) + " of one polyline call exhausted after " +
-                  std::to_string(acc.evaluations) + " evaluations; raise the method's budget";
-  acc.status = Status::max_iterations;
-  return false;
-}
-
-inline void merge_status(PositionResult& r, Status s, const std::string& message) {
-  if (s != Status::ok && r.status == Status::ok) {
-    r.status = s;
-    r.message = message;
-  }
+  return out.size();
 }
 
 }  // namespace detail
@@ -339,10 +279,12 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
   return r;
 }
 
-/// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). The
-/// positions are running integrals from the reference point, piece by piece (Rk4: one sweep
-/// over all pieces sharing end values, detail::polyline_rk4). The pieces share one evaluation
-/// budget (detail::polyline_budget); the points past it carry status max_iterations.
+/// n ≥ 2 points uniform in parameter p from t0 to t1 (both inside the domain). Each position is
+/// integrated from a point known to be right: the previous point, so that positions are running
+/// integrals from the reference point piece by piece (Rk4: one sweep over all pieces sharing end
+/// values, detail::polyline_rk4), or, after a point that failed, the nearer of the reference point
+/// and the last good point (PositionResult says what a failed point holds). The pieces share one
+/// evaluation budget (detail::polyline_budget); the points past it carry status max_iterations.
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic) {
@@ -364,36 +306,28 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   for (const CurvePoint& q : frames) out.emplace_back().point = q;
   const Form used = resolve_form(c, std::min({0.0, out.front().point.theta, out.back().point.theta}),
                                  std::max({0.0, out.front().point.theta, out.back().point.theta}), form);
+  std::vector<double> ts(out.size());
+  for (size_t k = 0; k < out.size(); ++k) ts[k] = used == Form::s ? out[k].point.s : out[k].point.theta;
+  detail::AnchorState state;
+  size_t first = 0;  // the points before it are done
+  auto piece_method = method;
+  long budget = detail::polyline_budget(method, n);
   if constexpr (std::same_as<M, Rk4>) {
     const bool frames_in_form = (used == Form::s) == (p == Parameter::s);
-    if (used == Form::s) {
-      detail::polyline_rk4(c, method, used, detail::SFormSweepIntegrand{&c}, frames_in_form, out);
-    } else {
-      detail::polyline_rk4(c, method, used, detail::ThetaFormSweepIntegrand{&c}, frames_in_form, out);
-    }
-    return out;
+    first = used == Form::s
+                ? detail::polyline_rk4(c, method, used, detail::SFormSweepIntegrand{&c}, frames_in_form, out)
+                : detail::polyline_rk4(c, method, used, detail::ThetaFormSweepIntegrand{&c}, frames_in_form, out);
+    if (first == out.size()) return out;
+    // A running sum that is no longer finite: the remaining points piece by piece, from the last
+    // good point, within what is left of the sweep's step budget.
+    state.spent = first > 0 ? out[first - 1].evaluations : 0;
+    if (first > 0) state.last_good = {ts[first - 1], out[first - 1].point.position, out[first - 1].error_estimate, Status::ok, {}};
+    budget = 2 * method.max_steps + 1;
+    piece_method.max_steps = std::max(1L, method.max_steps - state.spent / 2);
   }
-  auto var = [&](const CurvePoint& q) { return used == Form::s ? q.s : q.theta; };
-  double prev = 0.0;
-  std::complex<double> pos{};
-  PositionResult acc;
-  for (auto& r : out) {
-    // The pieces share one evaluation budget (R6): n pieces must not multiply the method's.
-    if (detail::within_polyline_budget(acc, detail::polyline_budget(method, n))) {
-      auto piece = detail::integrate_piece(c, method, used, prev, var(r.point));
-      pos += piece.value;
-      acc.error_estimate += piece.error_estimate;
-      acc.evaluations += piece.evaluations;
-      detail::merge_status(acc, piece.status, piece.message);
-    }
-    prev = var(r.point);
-    r.point.position = pos;
-    r.error_estimate = acc.error_estimate;
-    r.evaluations = acc.evaluations;
-    r.status = acc.status;
-    r.message = acc.message;
-    r.form = used;
-  }
+  for (size_t k = first; k < out.size(); ++k) out[k].form = used;
+  detail::anchored_samples(std::span(out).subspan(first), std::span<const double>(ts).subspan(first), state, budget,
+                           [&](double a, double b) { return detail::integrate_piece(c, piece_method, used, a, b); });
   return out;
 }
 
@@ -402,5 +336,17 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const AnyQua
                            Form form = Form::automatic);
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n,
                                      const AnyQuadrature& method, Form form = Form::automatic);
+
+/// The arc-length forms every curve model offers (PlanarCurveModel, curves/curve.hpp).
+template <class M>
+PositionResult position_at(const LaCurve& c, double s, const M& method) {
+  return position_at(c, Parameter::s, s, method);
+}
+template <class M>
+std::vector<PositionResult> polyline(const LaCurve& c, double s0, double s1, int n, const M& method) {
+  return polyline(c, Parameter::s, s0, s1, n, method);
+}
+
+static_assert(PlanarCurveModel<LaCurve, GaussKronrod>);
 
 }  // namespace lac

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "lac/curves/detail/polyline.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/quadratic/quadratic_curve.hpp"
 #include "lac/integrators/quadrature.hpp"
@@ -43,18 +44,19 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method)
 }
 
 /// Evaluation budget of one polyline call of n points (its pieces are separate quadrature calls):
-/// as for planar polylines (detail::polyline_budget), so that n pieces cannot multiply the method's
-/// per-call budget (R6).
+/// as for planar polylines (detail::piecewise_polyline_budget), so that n pieces cannot multiply
+/// the method's per-call budget (R6).
 template <QuadratureMethod M>
 long polyline_budget(const M& m, long n) {
-  if constexpr (std::same_as<M, Rk4>) return 2 * m.max_steps + 1;
-  else return detail::polyline_budget(m, n);
+  return detail::piecewise_polyline_budget(m, n);
 }
 
-/// n ≥ 2 points uniform in s from s0 to s1 (both inside s_domain()). Positions are running
-/// integrals from the reference point s = 0 (first piece 0 → s0, then piece by piece). Once the
-/// pieces have spent polyline_budget(method, n) evaluations, the remaining points are not integrated
-/// and carry status max_iterations.
+/// n ≥ 2 points uniform in s from s0 to s1 (both inside s_domain()). Each position is integrated
+/// from a point known to be right: the previous point (running integrals from the reference point
+/// s = 0: first piece 0 → s0, then piece by piece), or, after a point that failed, the nearer of
+/// s = 0 and the last good point (PositionResult says what a failed point holds). Once the pieces
+/// have spent polyline_budget(method, n) evaluations, the remaining points are not integrated and
+/// carry status max_iterations. A κ(s) status other than ok flags its own point.
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method) {
   method.validate();
@@ -62,31 +64,20 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
   c.check_s(s0, "s_from");
   c.check_s(s1, "s_to");
   std::vector<PositionResult> out(static_cast<size_t>(n));
-  const detail::QuadraticSFormIntegrand f{&c};
-  double prev = 0.0;
-  std::complex<double> pos{};
-  PositionResult acc;
+  std::vector<double> ts(out.size());
   for (int k = 0; k < n; ++k) {
     const double s = k + 1 == n ? s1 : s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n - 1);
     auto& r = out[static_cast<size_t>(k)];
     KappaSolution ks;
     r.point = c.frame_at(s, &ks);
-    detail::merge_status(acc, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
-    if (detail::within_polyline_budget(acc, polyline_budget(method, n))) {
-      auto piece = method.integrate(f, prev, s);
-      pos += piece.value;
-      acc.error_estimate += piece.error_estimate;
-      acc.evaluations += piece.evaluations;
-      detail::merge_status(acc, piece.status, piece.message);
-    }
-    prev = s;
-    r.point.position = pos;
-    r.error_estimate = acc.error_estimate;
-    r.evaluations = acc.evaluations;
-    r.status = acc.status;
-    r.message = acc.message;
+    detail::merge_status(r, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
     r.form = Form::s;
+    ts[static_cast<size_t>(k)] = s;
   }
+  const detail::QuadraticSFormIntegrand f{&c};
+  detail::AnchorState state;
+  detail::anchored_samples(out, ts, state, polyline_budget(method, n),
+                           [&](double a, double b) { return method.integrate(f, a, b); });
   return out;
 }
 
@@ -105,5 +96,7 @@ std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s
 /// "integrator" for igf, a closed form of the planar LA curve in standard form only.
 PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
+
+static_assert(PlanarCurveModel<QuadraticLaCurve, GaussKronrod>);
 
 }  // namespace lac

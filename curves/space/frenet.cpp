@@ -210,7 +210,7 @@ void check_start(const Frame3& f, const char* who) {
 void check_interval(const LaSpaceCurve& curve, double s0, double s1, const char* who) {
   require_finite(who, "s0", s0);
   require_finite(who, "s1", s1);
-  const SRange range = curve.s_range();
+  const Interval range = curve.s_range();
   if (!range.contains(s0)) throw_input_error(who, "s0", s0, interval_text(range.lo, range.hi));
   if (!(s1 >= s0) || !(s1 < range.hi)) throw_input_error(who, "s1", s1, interval_text(s0, range.hi, true));
 }

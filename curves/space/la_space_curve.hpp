@@ -4,65 +4,21 @@
 //   LCG  log(ρ ds/dρ) = α log ρ − log Λ     ρ(s) = (1 + αΛs)^(1/α)          (α = 0: e^(Λs))
 //   LTG  log(μ ds/dμ) = β log μ − log Ω     type 1: μ(s) = (ν^β + Ωβs)^(1/β)  (β = 0: ν e^(Ωs))
 //                                            type 2: μ(s) = (ν^β − Ωβs)^(1/β)  (β = 0: ν e^(−Ωs))
-// Both laws are one "log-linear graph law" log r(s) = log r0 + c s r0^(−β) g(β c s r0^(−β)),
-// g(x) = log1p(x)/x (→ 1 at 0), so α = 0, β = 0, Λ → 0 and Ω → 0 are exact limits, not cases.
+// Both laws are the standard-form law of the planar LA curve (curves/planar/la_curve.hpp):
+// ρ(s) is LaCurve(α, Λ)'s, and μ(s) = ν ρ̃(±s) with ρ̃ the ρ of LaCurve(β, Ω ν^(−β)) (+ for type
+// 1, − for type 2), so α = 0, β = 0, Λ → 0 and Ω → 0 are exact limits, not cases; the turning
+// angles ∫κ ds and ∫τ ds are that curve's θ(s).
 #include <cmath>
 #include <limits>
 
 #include "lac/common/error.hpp"
+#include "lac/common/numeric.hpp"
+#include "lac/curves/planar/la_curve.hpp"
 
 namespace lac {
 
 /// Type 1: ρ and μ both increase with s. Type 2: ρ increases, μ decreases (000 §2.1).
 enum class TorsionType { type1 = 1, type2 = 2 };
-
-/// Open arc-length interval (lo, hi); infinite ends are ±inf.
-struct SRange {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool contains(double s) const { return s > lo && s < hi; }
-};
-
-namespace detail {
-inline double log1p_ratio(double x) { return x == 0 ? 1.0 : std::log1p(x) / x; }
-inline double expm1_ratio(double y) { return y == 0 ? 1.0 : std::expm1(y) / y; }
-
-/// The law log(r ds/dr) = slope·log r − log|rate| with r(0) = r0 and dr/ds of the sign of rate:
-/// log r(s) = log r0 + log(1 + slope·k·s)/slope, k = rate·r0^(−slope) (MATH.md §1, §3).
-struct GraphLaw {
-  double slope = 0;    ///< α or β
-  double rate = 0;     ///< Λ, +Ω (type 1) or −Ω (type 2)
-  double log_r0 = 0;   ///< 0 for ρ, log ν for μ
-  double k() const { return rate * std::exp(-slope * log_r0); }
-  double log_r(double s) const {
-    const double ks = k() * s;
-    return log_r0 + ks * log1p_ratio(slope * ks);
-  }
-  /// ∫₀^s du / r(u) = s g(slope·k·s) h((slope − 1)(log r − log r0)) / r0 (MATH.md §1's θ(s)).
-  double integral_of_inverse(double s) const {
-    const double ks = k() * s;
-    const double g = log1p_ratio(slope * ks);
-    return s * g * expm1_ratio((slope - 1.0) * ks * g) * std::exp(-log_r0);
-  }
-  /// The s ≥ 0 where integral_of_inverse reaches phi ≥ 0; +inf when it never does.
-  double s_at_integral_of_inverse(double phi) const {
-    const double j = phi * std::exp(log_r0), kk = k();
-    const double x = (slope - 1.0) * kk * j;
-    if (!(1.0 + x > 0)) return std::numeric_limits<double>::infinity();
-    const double g = log1p_ratio(x);
-    const double s = j * g * expm1_ratio(slope * kk * j * g);
-    return std::isfinite(s) && s >= 0 ? s : std::numeric_limits<double>::infinity();
-  }
-  /// Where 1 + slope·k·s stays positive.
-  SRange range() const {
-    const double c = slope * k();
-    SRange r;
-    if (c > 0) r.lo = -1.0 / c;
-    if (c < 0) r.hi = -1.0 / c;
-    return r;
-  }
-};
-}  // namespace detail
 
 /// Curvature and torsion laws of one LA space curve in standard form.
 class LaSpaceCurve {
@@ -71,20 +27,20 @@ class LaSpaceCurve {
   /// Ω·ν^(−β)·max(1, |β|) finite doubles. Throws InputError naming the parameter otherwise.
   LaSpaceCurve(double alpha, double beta, double lambda, double omega, double nu, TorsionType type);
 
-  double alpha() const { return rho_law_.slope; }
-  double beta() const { return mu_law_.slope; }
-  double lambda() const { return rho_law_.rate; }
-  double omega() const { return type_ == TorsionType::type1 ? mu_law_.rate : -mu_law_.rate; }
+  double alpha() const { return rho_law_.alpha(); }
+  double beta() const { return mu_law_.alpha(); }
+  double lambda() const { return rho_law_.lambda(); }
+  double omega() const { return omega_; }
   double nu() const { return nu_; }
   TorsionType type() const { return type_; }
 
   /// Open s range where ρ and μ are both positive and finite (intersection of both laws).
-  SRange s_range() const;
+  Interval s_range() const;
   bool contains(double s) const { return s_range().contains(s); }
 
   // Hot-path forms: s must lie in s_range() (not checked).
-  double log_rho(double s) const { return rho_law_.log_r(s); }
-  double log_mu(double s) const { return mu_law_.log_r(s); }
+  double log_rho(double s) const { return rho_law_.log_rho_at_s_unchecked(s); }
+  double log_mu(double s) const { return log_nu_ + mu_law_.log_rho_at_s_unchecked(mu_sign_ * s); }
   double rho(double s) const { return std::exp(log_rho(s)); }
   double mu(double s) const { return std::exp(log_mu(s)); }
   double kappa(double s) const { return std::exp(-log_rho(s)); }
@@ -110,9 +66,11 @@ class LaSpaceCurve {
   void check_s(double s, const char* name) const;
 
  private:
-  detail::GraphLaw rho_law_;
-  detail::GraphLaw mu_law_;
-  double nu_;
+  LaCurve rho_law_{0, 0};  ///< ρ(s)
+  LaCurve mu_law_{0, 0};   ///< μ(s)/ν at ±s (mu_sign_)
+  double mu_sign_ = 1;     ///< +1 type 1, −1 type 2
+  double omega_;
+  double nu_, log_nu_;
   TorsionType type_;
 };
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "lac/common/error.hpp"
-#include "lac/curves/planar/linear_q.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
 
@@ -171,16 +171,16 @@ TEST(HermiteRobustness, SCurveWithNonFiniteResidualIsNotUsable) {
 // huge angles, past the fuzzer's per-call bound). Up to the bound the value is accurate: a
 // circle (α = −1, q = κ̃ = const) turning Φ rad has ∫e^{iφ} = (e^{iΦ} − 1)/(iΦ).
 TEST(HermiteRobustness, TurningBeyondWhatThePanelsResolveIsNaN) {
-  const detail::LaLaw clothoid{-1.0, 1.0};
-  for (const double turn : {1.0, 100.0, detail::kMaxResolvedTurning}) {
+  const LaLaw clothoid{-1.0, 1.0};
+  for (const double turn : {1.0, 100.0, lac::detail::kMaxResolvedTurning}) {
     long evaluations = 0;
-    const auto got = detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
+    const auto got = lac::detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
     const auto exact = (std::polar(1.0, turn) - 1.0) / std::complex<double>(0.0, turn);
     EXPECT_LE(std::abs(got - exact), 1e-12) << "turning " << turn;
   }
-  for (const double turn : {1.01 * detail::kMaxResolvedTurning, 1e66, HUGE_VAL}) {
+  for (const double turn : {1.01 * lac::detail::kMaxResolvedTurning, 1e66, HUGE_VAL}) {
     long evaluations = 0;
-    const auto got = detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
+    const auto got = lac::detail::integrate_tangent(clothoid, {0.0, 1.0, turn, turn, 0.0}, evaluations);
     EXPECT_TRUE(std::isnan(got.real()) && std::isnan(got.imag())) << "turning " << turn << ": " << got;
     EXPECT_EQ(evaluations, 0);
   }

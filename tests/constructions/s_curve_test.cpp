@@ -8,7 +8,7 @@
 #include <random>
 
 #include "lac/common/error.hpp"
-#include "lac/curves/planar/linear_q.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
 
 namespace lac::hermite {
 namespace {
@@ -116,12 +116,12 @@ TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
   for (const Seg& s : {Seg{-1, 1, -2}, Seg{-0.5, 2, -1}, Seg{-2, 1, -1}, Seg{-5, 3, -0.2}, Seg{-0.9, 0, 2},
                        Seg{-3, 0.05, 4}, Seg{-2, -3, -0.1}, Seg{0.5, 1, 3}, Seg{2, 0.3, 4}, Seg{1, 0.5, 2}}) {
     for (double len : {0.25, 0.5, 2.0}) {
-      const detail::LaLaw law{s.alpha, 1.0};
-      const detail::LinearQSegment seg{0.1, 0.1 + len, s.qa, s.qb, 0.3};
-      const auto b = detail::integrate_tangent_reference(law, seg);
+      const LaLaw law{s.alpha, 1.0};
+      const lac::detail::LinearQ seg{0.1, 0.1 + len, s.qa, s.qb, 0.3};
+      const auto b = lac::detail::integrate_tangent_reference(law, seg);
       for (int panels : {1, 2}) {
         long evals = 0;
-        const auto a = detail::integrate_tangent(law, seg, evals, panels);
+        const auto a = lac::detail::integrate_tangent(law, seg, evals, panels);
         const double e = std::abs(a - b) / len;
         worst = std::max(worst, e);
         EXPECT_LE(e, kQuadratureTol) << "alpha " << s.alpha << " q " << s.qa << ".." << s.qb << " len " << len
@@ -140,9 +140,9 @@ TEST(LinearQ, ReferenceToleranceIsNotTheAccuracyLimit) {
   std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2), curvature(-3, 3);
   double worst = 0;
   int segments = 0;
-  auto compare = [&](const detail::LaLaw& law, const detail::LinearQSegment& seg) {
-    const auto a = detail::integrate_tangent_reference(law, seg);
-    const auto b = detail::integrate_tangent_reference(law, seg, 1e-15);
+  auto compare = [&](const LaLaw& law, const lac::detail::LinearQ& seg) {
+    const auto a = lac::detail::integrate_tangent_reference(law, seg);
+    const auto b = lac::detail::integrate_tangent_reference(law, seg, 1e-15);
     const double e = std::abs(a - b) / seg.length();
     worst = std::max(worst, e);
     ++segments;
@@ -162,12 +162,12 @@ TEST(LinearQ, ReferenceToleranceIsNotTheAccuracyLimit) {
   }
   EXPECT_GT(segments, 300);
   std::printf("worst tanh-sinh at tolerance %g vs 1e-15 (relative to length, %d segments): %.3e\n",
-              detail::kReferenceTolerance, segments, worst);
+              lac::detail::kReferenceTolerance, segments, worst);
 }
 
 TEST(LinearQ, DividedDifferenceIsTheArcLimit) {
   for (double alpha : {-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 3.0}) {
-    const detail::LaLaw law{alpha, 1.0};
+    const LaLaw law{alpha, 1.0};
     const double q = 1.7;
     EXPECT_DOUBLE_EQ(law.divided_difference(q, q), law.kappa_of_q(q));
     // Near-equal arguments: continuous with the exact value (no cancellation blow-up).

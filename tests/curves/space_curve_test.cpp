@@ -35,7 +35,7 @@ TEST(SpaceCurveLaws, RhoMuMatchTheTablesOfMathMd) {
   double worst = 0;
   for (const auto& c : kLawCases) {
     const LaSpaceCurve cv(c.a, c.b, c.l, c.o, c.nu, c.ty);
-    const SRange r = cv.s_range();
+    const Interval r = cv.s_range();
     const double hi = std::isfinite(r.hi) ? r.hi : 5.0;
     for (int i = 0; i <= 20; ++i) {
       const double s = 0.95 * hi * i / 20.0;

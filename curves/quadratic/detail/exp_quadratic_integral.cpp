@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-#include "lac/curves/planar/la_curve.hpp"
+#include "lac/common/numeric.hpp"
 
 namespace lac::detail {
 namespace {
@@ -136,7 +136,7 @@ double ExpQuadraticIntegral::between(double v, double w) const {
 
 double ExpQuadraticIntegral::operator()(double u) const {
   if (u == 0) return 0.0;  // the reference point; the series below would form 0·inf for |γ| = DBL_MAX
-  if (gamma_ == 0) return u * LaCurve::expm1_ratio(-alpha_ * u);
+  if (gamma_ == 0) return u * expm1_ratio(-alpha_ * u);
   if (std::abs(gamma_) * u * u + std::abs(alpha_ * u) <= kNearRegion) return midpoint_series(0.0, u);
   const double e = exponent(u);
   if (gamma_ > 0) {
@@ -212,7 +212,7 @@ InverseSolution ExpQuadraticIntegral::inverse_003(double target) const {
 
 InverseSolution ExpQuadraticIntegral::inverse(double target, special::ErfInverseMethod method, int max_iterations) const {
   if (gamma_ == 0) {  // LA curve: (1 − e^(−αu))/α = F exactly invertible
-    return {target * LaCurve::log1p_ratio(-alpha_ * target), 0, Status::ok};
+    return {target * log1p_ratio(-alpha_ * target), 0, Status::ok};
   }
   if (method == special::ErfInverseMethod::hybrid_003) return inverse_003(target);
   int start_iterations = 0;
@@ -224,7 +224,7 @@ InverseSolution ExpQuadraticIntegral::inverse(double target, special::ErfInverse
 
 InverseSolution ExpQuadraticIntegral::polish(double target, double u, int max_iterations) const {
   InverseSolution out;
-  if (gamma_ == 0) return {target * LaCurve::log1p_ratio(-alpha_ * target), 0, Status::ok};
+  if (gamma_ == 0) return {target * log1p_ratio(-alpha_ * target), 0, Status::ok};
   // Halley on f(u) = F(u) − target: f' = e^E, f''/f' = E'(u) = 2γu − α. Bracket by sign of f.
   double lo = -kInf, hi = kInf;
   for (int it = 1; it <= max_iterations; ++it) {

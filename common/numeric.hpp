@@ -1,0 +1,33 @@
+#pragma once
+// Small numeric helpers shared by the curve models.
+//   log1p_ratio(x) = log1p(x)/x,  expm1_ratio(y) = expm1(y)/y   (both = 1 at 0)
+// Writing the LA closed forms as products of these makes α = 0, α = 1 and Λ → 0 exact limits
+// instead of special cases (curves/planar/la_curve.hpp).
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace lac {
+
+/// g(x) = log1p(x)/x, continuous (= 1) at 0.
+inline double log1p_ratio(double x) { return x == 0 ? 1.0 : std::log1p(x) / x; }
+/// h(y) = expm1(y)/y, continuous (= 1) at 0.
+inline double expm1_ratio(double y) { return y == 0 ? 1.0 : std::expm1(y) / y; }
+
+/// An interval of a curve parameter; infinite ends are ±inf. Open unless an end is marked closed
+/// (e.g. the arc-length range [0, L] of a finite curve).
+struct Interval {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_closed = false;
+  bool hi_closed = false;
+  bool contains(double t) const { return (lo_closed ? t >= lo : t > lo) && (hi_closed ? t <= hi : t < hi); }
+};
+
+/// The angle a reduced to (−π, π] (exact: std::remainder, then −π → π).
+inline double wrap_angle(double a) {
+  const double r = std::remainder(a, 2.0 * std::numbers::pi);
+  return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
+}
+
+}  // namespace lac

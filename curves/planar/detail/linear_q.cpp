@@ -1,0 +1,190 @@
+#include "lac/curves/planar/detail/linear_q.hpp"
+
+#include <algorithm>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+#include "lac/integrators/gauss_legendre.hpp"
+
+namespace lac::detail {
+namespace {
+
+// 10-point Gauss–Legendre on twice the `panels` equal panels of [t0, 1] of the 20-point sums
+// below (f(t) is the substituted integrand, du/dt included): as many nodes, a different rule, so
+// its difference from the 20-point sum bounds the latter's error without the 10-point rule's own
+// error on the wider panels (which would flag smooth pieces at 1e-8 while the sum is at 1e-15).
+template <class F>
+std::complex<double> coarse_sum(const F& f, double t0, int panels, long& evaluations) {
+  const GaussLegendreRule<10>& g = gauss_legendre_10();
+  panels *= 2;
+  const double span = (1.0 - t0) / panels;
+  std::complex<double> sum{};
+  for (int panel = 0; panel < panels; ++panel) {
+    const double a = t0 + panel * span;
+    for (size_t k = 0; k < 10; ++k) sum += (g.weights[k] * span) * f(a + span * g.nodes[k]);
+  }
+  evaluations += 10 * panels;
+  return sum;
+}
+
+// ∫_{0}^{1} f(u(t)) u'(t) dt with u(t) = u0 + (e − u0)·t: a plain piece.
+template <class Phi>
+std::complex<double> plain(const Phi& phi, double u0, double e, int panels, long& evaluations,
+                           std::complex<double>* coarse) {
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
+  std::complex<double> sum{};
+  // κ keeps its sign on a piece, so φ is monotonic there: one more panel per radian of turning.
+  const double turning = std::abs(phi(u0 + (e - u0)) - phi(u0));
+  if (!(turning <= kMaxResolvedTurning)) {
+    if (coarse) *coarse = {NAN, NAN};
+    return {NAN, NAN};
+  }
+  panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
+  const double span = 1.0 / panels, du = e - u0;
+  for (int panel = 0; panel < panels; ++panel) {
+    const double a = panel * span;
+    for (size_t k = 0; k < 20; ++k) {
+      const double t = a + span * g.nodes[k];
+      sum += (g.weights[k] * span * du) * std::polar(1.0, phi(u0 + du * t));
+    }
+  }
+  evaluations += 20 * panels;
+  if (coarse) *coarse = coarse_sum([&](double t) { return du * std::polar(1.0, phi(u0 + du * t)); }, 0.0, panels, evaluations);
+  return sum;
+}
+
+// t^β at the nodes t = (panel + x_k)/panels of `panels` equal panels on [0, 1]. They depend on
+// α and the panel count only, so a solve at one α (every root-finder step of an S-curve, every
+// Newton step of a G2 problem) computes them once per thread.
+const std::vector<double>& node_powers(double beta, int panels) {
+  struct Entry {
+    double beta = NAN;
+    int panels = 0;
+    std::vector<double> values;
+  };
+  thread_local std::array<Entry, 16> cache;
+  thread_local size_t next = 0;
+  for (const Entry& e : cache)
+    if (e.beta == beta && e.panels == panels) return e.values;
+  Entry& e = cache[next++ % cache.size()];
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
+  e.beta = beta;
+  e.panels = panels;
+  e.values.resize(20 * static_cast<size_t>(panels));
+  for (int panel = 0; panel < panels; ++panel)
+    for (size_t k = 0; k < 20; ++k)
+      e.values[20 * static_cast<size_t>(panel) + k] = std::pow((panel + g.nodes[k]) / panels, beta);
+  return e.values;
+}
+
+// A graded piece (TangentPiece) with φ in closed form: the same nodes and weights as a plain
+// piece in t, without a power per node when t0 = 0 (node_powers).
+std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& evaluations,
+                                      std::complex<double>* coarse) {
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
+  const double beta = p.beta, phi_zero = p.phi_zero, delta = p.delta, t0 = p.t0;
+  const double turning = std::abs(delta) * (1.0 - std::pow(t0, beta));
+  if (!(turning <= kMaxResolvedTurning)) {
+    if (coarse) *coarse = {NAN, NAN};
+    return {NAN, NAN};
+  }
+  panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
+  const double span = (1.0 - t0) / panels;
+  const std::vector<double>* powers = t0 == 0 ? &node_powers(beta, panels) : nullptr;
+  std::complex<double> sum{};
+  for (int panel = 0; panel < panels; ++panel) {
+    const double a = t0 + panel * span;
+    for (size_t k = 0; k < 20; ++k) {
+      const double t = a + span * g.nodes[k];
+      const double tb = powers ? (*powers)[20 * static_cast<size_t>(panel) + k] : std::pow(t, beta);
+      sum += (g.weights[k] * span * 4.0 * t * t * t) * std::polar(1.0, phi_zero + delta * tb);
+    }
+  }
+  evaluations += 20 * panels;
+  if (coarse)
+    *coarse = (p.e - p.u0) * coarse_sum([&](double t) { return 4.0 * t * t * t * std::polar(1.0, p.phi(t)); }, t0, panels,
+                                        evaluations);
+  return (p.e - p.u0) * sum;
+}
+
+}  // namespace
+
+TangentPlan tangent_plan(const LaLaw& law, const LinearQ& seg) {
+  TangentPlan plan;
+  plan.pieces[0].u0 = seg.ua;
+  plan.pieces[0].e = seg.ub;
+  const bool rough_at_zero = law.alpha < 0 && law.alpha != -1;
+  if (!rough_at_zero || seg.qa == seg.qb) return plan;
+  const double ua = seg.ua, ub = seg.ub, len = ub - ua, Fa = law.F(seg.qa);
+  const double c0 = seg.slope(), u_zero = ua - seg.qa / c0;
+  // 004 Eq. (5) with F(0) = 0 (α < 0): φ* = c2 = φa − F(qa)/c0, φ(e) − φ* = F(q_e)/c0.
+  TangentPiece g;
+  g.graded = true;
+  g.u0 = u_zero;
+  g.beta = 4.0 * (law.alpha - 1.0) / law.alpha;
+  g.phi_zero = seg.phi_a - Fa / c0;
+  TangentPiece toward_a = g, toward_b = g;
+  toward_a.sign = -1;
+  toward_a.e = ua;
+  toward_a.delta = Fa / c0;
+  toward_b.e = ub;
+  if (u_zero > ua && u_zero < ub) {
+    toward_b.delta = law.F(seg.qb) / c0;
+    plan.pieces = {toward_a, toward_b};
+    plan.count = 2;
+  } else if (u_zero <= ua && ua - u_zero < 0.5 * len) {
+    toward_b.delta = law.F(seg.qb) / c0;
+    toward_b.t0 = std::pow((ua - u_zero) / (ub - u_zero), 0.25);
+    plan.pieces[0] = toward_b;
+  } else if (u_zero >= ub && u_zero - ub < 0.5 * len) {
+    toward_a.t0 = std::pow((u_zero - ub) / (u_zero - ua), 0.25);
+    plan.pieces[0] = toward_a;
+  }
+  return plan;
+}
+
+std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, long& evaluations, int panels,
+                                       std::complex<double>* coarse) {
+  const TangentPlan plan = tangent_plan(law, seg);
+  std::complex<double> value[2], rough[2];
+  for (int i = 0; i < plan.count; ++i) {
+    const TangentPiece& p = plan.pieces[static_cast<size_t>(i)];
+    std::complex<double>* c = coarse ? &rough[i] : nullptr;
+    if (p.graded) {
+      value[i] = graded_from_zero(p, panels, evaluations, c);
+    } else {
+      const double Fa = law.F(seg.qa);
+      const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)); };
+      value[i] = plain(phi, seg.ua, seg.ub, panels, evaluations, c);
+    }
+    if (p.sign < 0) value[i] = -value[i], rough[i] = -rough[i];
+  }
+  if (coarse) *coarse = plan.count == 2 ? rough[0] + rough[1] : rough[0];
+  return plan.count == 2 ? value[0] + value[1] : value[0];
+}
+
+std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQ& seg, double tolerance) {
+  thread_local boost::math::quadrature::tanh_sinh<double> ts;  // integrate() is non-const
+  std::vector<double> cuts{seg.ua};
+  if (seg.qa * seg.qb < 0) {
+    // A zero of q within rounding of an end (e.g. κ0 = 5e-324) leaves a piece of subnormal width,
+    // on which tanh-sinh fails; that piece contributes nothing, so it is not split off.
+    const double cut = seg.ua - seg.qa / seg.slope(), margin = 16 * DBL_EPSILON * seg.length();
+    if (cut - seg.ua > margin && seg.ub - cut > margin) cuts.push_back(cut);
+  }
+  cuts.push_back(seg.ub);
+  std::complex<double> sum{};
+  // One complex-valued integral per piece (Boost ≥ 1.72 accepts complex integrands): cos and sin
+  // share each evaluation of φ, half the cost of two real integrals.
+  const auto f = [&](double u) { return std::polar(1.0, seg.phi_at(law, u)); };
+  try {
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) sum += ts.integrate(f, cuts[k], cuts[k + 1], tolerance);
+  } catch (const std::exception&) {  // Boost's domain/evaluation errors (non-finite nodes or values)
+    return {NAN, NAN};
+  }
+  return sum;
+}
+
+}  // namespace lac::detail

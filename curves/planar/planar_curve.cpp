@@ -1,0 +1,126 @@
+#include "lac/curves/planar/planar_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "lac/common/error.hpp"
+
+namespace lac {
+
+namespace {
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr size_t kMaxCandidates = 1'000'000;
+}  // namespace
+
+PlanarCurve::PlanarCurve(std::vector<LaSegment> segments) : segments_(std::move(segments)) {
+  if (segments_.empty()) throw_input_error("PlanarCurve", "segments", "at least one segment is needed");
+  turns_.push_back(0.0);
+  for (size_t k = 0; k < segments_.size(); ++k) {
+    starts_.push_back(starts_.back() + segments_[k].length());
+    if (k == 0) continue;
+    // θ continuous across the joint: the previous end's angle (with its turns) and this start's
+    // differ by a multiple of 2π plus the G1 gap.
+    const double before = segments_[k - 1].theta_end() + turns_[k - 1];
+    turns_.push_back(kTwoPi * std::round((before - segments_[k].theta_start()) / kTwoPi));
+  }
+  length_ = starts_.back();
+  if (!std::isfinite(length_)) throw_input_error("PlanarCurve", "segments", "the total length is not a finite double");
+}
+
+size_t PlanarCurve::segment_at(double s) const {
+  check_s(s, "s");
+  // The last start ≤ s among segments 0 … n−1.
+  const auto it = std::upper_bound(starts_.begin() + 1, starts_.end() - 1, s);
+  return static_cast<size_t>(it - starts_.begin()) - 1;
+}
+
+double PlanarCurve::local_s(size_t k, double s) const {
+  return std::clamp(s - starts_.at(k), 0.0, segments_.at(k).length());
+}
+
+CurvePoint PlanarCurve::frame_at(double s) const {
+  const size_t k = segment_at(s);
+  CurvePoint c = segments_[k].frame_at(local_s(k, s));
+  c.s = s;
+  c.theta += turns_[k];
+  return c;
+}
+
+double PlanarCurve::theta_at(double s) const {
+  const size_t k = segment_at(s);
+  return segments_[k].theta_at(local_s(k, s)) + turns_[k];
+}
+
+double PlanarCurve::kappa_at(double s) const {
+  const size_t k = segment_at(s);
+  return segments_[k].kappa_at(local_s(k, s));
+}
+
+double PlanarCurve::dkappa_ds_at(double s) const {
+  const size_t k = segment_at(s);
+  return segments_[k].dkappa_ds_at(local_s(k, s));
+}
+
+PlanarCurve PlanarCurve::reversed(std::complex<double> end_point) const {
+  check_s(0.0, "s");
+  std::vector<LaSegment> out;
+  out.reserve(segments_.size());
+  for (size_t k = segments_.size(); k-- > 0;)
+    out.push_back(segments_[k].reversed(k + 1 < segments_.size() ? segments_[k + 1].start() : end_point));
+  return PlanarCurve(std::move(out));
+}
+
+void PlanarCurve::check_s(double s, const char* name) const {
+  if (segments_.empty()) throw_input_error("PlanarCurve", name, "the curve has no segments");
+  if (!(s >= 0 && s <= length_)) throw_input_error("PlanarCurve", name, s, interval_text(0, length_, true, true));
+}
+
+std::vector<double> PlanarCurve::extreme_candidates(size_t k) const {
+  const LaSegment& seg = segments_.at(k);
+  const LaLaw& law = seg.law();
+  const detail::LinearQ& q = seg.normalized();
+  std::vector<double> out{seg.ua()};
+  // Pieces on which φ is monotonic: split where κ = 0.
+  std::vector<double> cuts{seg.ua()};
+  if (const auto u = seg.inflection_u(); u && *u > seg.ua() && *u < seg.ub()) cuts.push_back(*u);
+  cuts.push_back(seg.ub());
+  const double c0 = q.slope(), Fa = law.F(q.qa);
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double u_lo = cuts[i], u_hi = cuts[i + 1];
+    const double phi_lo = seg.phi_at(u_lo), phi_hi = seg.phi_at(u_hi);
+    const double sign = seg.q_at(0.5 * (u_lo + u_hi)) < 0 ? -1.0 : 1.0;
+    // θ = angle + φ ≡ 0 (mod π/2): φ_j = jπ/2 − angle strictly between the piece's end angles.
+    const double quarter = 0.5 * std::numbers::pi, angle = seg.rotation_angle();
+    const double a = std::min(phi_lo, phi_hi) + angle, b = std::max(phi_lo, phi_hi) + angle;
+    const double j0 = std::floor(a / quarter) + 1, j1 = std::ceil(b / quarter) - 1;
+    if (!(j1 - j0 < static_cast<double>(kMaxCandidates)))
+      throw_input_error("PlanarCurve::extreme_candidates", "segment", static_cast<double>(k),
+                        "segments turning less than " + format_number(kMaxCandidates * quarter) + " rad");
+    std::vector<double> found;
+    for (double j = j0; j <= j1; ++j) {
+      const double target = j * quarter - angle;
+      // φ(u) − φa = (F(q(u)) − F(qa))/c0 (any α, through q = 0 too): u from F⁻¹ on this side of
+      // 0, then Newton on φ(u) = target (φ' = K(q)) for the rounding.
+      double u = c0 == 0 ? q.ua + (target - q.phi_a) / law.kappa_of_q(q.qa)
+                         : q.ua + (law.F_inverse(Fa + c0 * (target - q.phi_a), sign) - q.qa) / c0;
+      if (!(u >= u_lo && u <= u_hi)) u = u_lo + (u_hi - u_lo) * (target - phi_lo) / (phi_hi - phi_lo);
+      for (int it = 0; it < 3; ++it) {
+        const double slope = seg.curvature_per_u(u);
+        if (!(slope != 0)) break;
+        const double next = std::clamp(u - (seg.phi_at(u) - target) / slope, u_lo, u_hi);
+        if (!std::isfinite(next)) break;
+        u = next;
+      }
+      found.push_back(std::clamp(u, u_lo, u_hi));
+    }
+    std::sort(found.begin(), found.end());
+    out.insert(out.end(), found.begin(), found.end());
+    out.push_back(u_hi);
+  }
+  // Ascending; duplicates (a candidate at a piece end) cost an empty integral only.
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace lac
