@@ -61,8 +61,8 @@ struct CountingIntegrand {
 /// estimate |S_h - S_2h| / 15 from the same nodes (S_2h uses every other node; the factor 2
 /// keeps it a bound before the asymptotic regime), plus a rounding term; see Rk4Sweep.
 /// Budget: at most max_steps steps per call (per sweep for a polyline); a call that needs more
-/// is not run and returns status max_iterations (5·10^6 steps = 10^7 evaluations: 0.42 s CPU on
-/// the LA s-form integrand, measured with `lac eval` on the development machine).
+/// is not run and returns status max_iterations (5·10^6 steps = 10^7 evaluations; docs/robustness.md
+/// gives its cost).
 struct Rk4 {
   static constexpr std::string_view name = "rk4";
   double h = 1e-3;  ///< step in the integration variable (002 uses 0.1, 0.01, 0.001)
@@ -364,7 +364,7 @@ struct GaussKronrod {
         std::push_heap(heap.begin(), heap.end(), by_error);
       }
       // Exact re-sum (no drift from repeated subtraction) while it is cheap; beyond kResumAll pieces
-      // (R6: the re-sum made long runs quadratic) update in place and re-sum every 64 splits and
+      // (the re-sum made long runs quadratic) update in place and re-sum every 64 splits and
       // whenever the updated sum says converged, so stopping is always decided on an exact sum.
       error += left.error + right.error - worst.error;
       const bool converged = !(error > tol * std::abs(total) && error > 50 * kEps * l1);

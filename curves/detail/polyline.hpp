@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the polylines of every curve model: evaluation budgets (R6 of docs/robustness.md: the
+// Shared by the polylines of every curve model: evaluation budgets (docs/robustness.md, budgets: the
 // pieces of one polyline share one budget, so n pieces cannot multiply a method's per-call budget)
 // and the anchored driver that integrates each point from a point known to be right.
 #include <algorithm>
@@ -15,7 +15,7 @@
 namespace lac::detail {
 
 /// Evaluation budget of one position call made of several quadrature calls: the method's own
-/// per-call budget, so that many pieces cannot multiply it (R6). Rk4 needs none for a standard-form
+/// per-call budget, so that many pieces cannot multiply it. Rk4 needs none for a standard-form
 /// curve: one Rk4Sweep spans all pieces there. A method without a budget of its own
 /// (GaussLegendre: fixed cost per call; GkTanhSinh: bounded depth and levels) gets Gauss–Kronrod's
 /// default one.

@@ -109,7 +109,7 @@ class LaSegment {
 /// ∫_{u0}^{u1} e^{iφ(u)} du in the segment's frame (u0, u1 ∈ [ua, ub], either order), with any
 /// quadrature method. The inflection split and the graded substitution next to a zero of q
 /// (detail::tangent_plan) apply to every method; pieces turning more than 64 rad are split
-/// further, and the parts share the method's budget (R6). GaussLegendre runs the fast path of
+/// further, and the parts share the method's budget. GaussLegendre runs the fast path of
 /// detail::integrate_tangent (per-radian panels, at most 64, cached node powers; its value bit for
 /// bit) with the 10-point rule on twice as many panels as error estimate (status
 /// tolerance_not_met above GaussLegendre::tol relative); beyond 1024 rad of turning on a piece it

@@ -101,7 +101,7 @@ PositionResult position_at(const PlanarCurve& curve, double s, const M& method =
 /// n ≥ 2 points uniform in s from s0 to s1 (both in [0, length()]). Each position is integrated
 /// from a point known to be right: the start of its segment or the previous point of the same
 /// segment (after a point that failed, the nearer of the segment's start and the last good point).
-/// The pieces share one evaluation budget (R6); PositionResult says what a failed point holds.
+/// The pieces share one evaluation budget; PositionResult says what a failed point holds.
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const M& method);
 

@@ -45,7 +45,7 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method)
 
 /// Evaluation budget of one polyline call of n points (its pieces are separate quadrature calls):
 /// as for planar polylines (detail::piecewise_polyline_budget), so that n pieces cannot multiply
-/// the method's per-call budget (R6).
+/// the method's per-call budget.
 template <QuadratureMethod M>
 long polyline_budget(const M& m, long n) {
   return detail::piecewise_polyline_budget(m, n);

@@ -35,7 +35,7 @@ double tangent_rounding(const LaLaw& law, const LinearQ& seg);
 /// of GaussLegendre::integrate.
 IntegralResult<std::complex<double>> integrate_tangent_gl(const LaLaw& law, const LinearQ& seg, const GaussLegendre& m);
 
-/// Budget of one tangent integral made of several calls of m (R6): the method's per-call budget
+/// Budget of one tangent integral made of several calls of m: the method's per-call budget
 /// (Rk4: one sweep's 2 max_steps + 1 evaluations).
 template <class M>
 long tangent_budget(const M& m) {
