@@ -7,10 +7,12 @@
 // inflection). Gauss–Kronrod converges slowly there; tanh-sinh converges exponentially.
 // Satisfies QuadratureMethod, so position_at / polyline accept it.
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <array>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <memory>
 #include <string_view>
 
 #include "lac/integrators/quadrature.hpp"
@@ -27,6 +29,15 @@ struct GkTanhSinh {
     if (!(tol >= 1e-16) || !std::isfinite(tol)) throw_input_error(name, "tol", tol, "[1e-16, inf)");
     if (gk_max_depth < 1 || gk_max_depth > 30) throw_input_error(name, "gk_max_depth", gk_max_depth, "[1, 30]");
     if (ts_max_levels < 4 || ts_max_levels > 20) throw_input_error(name, "ts_max_levels", static_cast<double>(ts_max_levels), "[4, 20]");
+  }
+
+  /// The tanh-sinh rule with `levels` refinement levels (its abscissa tables): one per thread and
+  /// level count, as Boost 1.74 declares integrate() non-const.
+  static boost::math::quadrature::tanh_sinh<double>& tanh_sinh_rule(std::size_t levels) {
+    thread_local std::array<std::unique_ptr<boost::math::quadrature::tanh_sinh<double>>, 21> rules;
+    auto& rule = rules.at(levels);
+    if (!rule) rule = std::make_unique<boost::math::quadrature::tanh_sinh<double>>(levels);
+    return *rule;
   }
 
   template <Integrand F>
@@ -58,8 +69,7 @@ struct GkTanhSinh {
       }
     }
     if (r.status == Status::ok) return r;
-    // Boost 1.74 declares integrate() non-const; one rule (its abscissa tables) per thread.
-    thread_local boost::math::quadrature::tanh_sinh<double> rule(ts_max_levels);
+    boost::math::quadrature::tanh_sinh<double>& rule = tanh_sinh_rule(ts_max_levels);
     long count = 0;
     CountingIntegrand<std::remove_reference_t<F>> counted{&f, &count};
     double err = 0, l1 = 0;

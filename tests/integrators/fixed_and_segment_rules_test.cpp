@@ -100,6 +100,19 @@ TEST(GkTanhSinhQuadrature, BehavesAsTheSegmentQuadratureItReplaces) {
   EXPECT_EQ(GkTanhSinh{}.integrate([](double x) { return x; }, 2.0, 2.0).evaluations, 0);
 }
 
+// ts_max_levels applies to every call, also after a call with other levels in the same thread (the
+// rule and its abscissa tables are kept per level count): fewer levels cost fewer evaluations on an
+// integrand that needs all of them, and the default comes back unchanged.
+TEST(GkTanhSinhQuadrature, LevelsApplyPerCall) {
+  const auto f = [](double x) { return std::pow(2 - x, -0.75); };
+  const auto full = GkTanhSinh{}.integrate(f, 0.0, 2.0);
+  const auto few = GkTanhSinh{.ts_max_levels = 5}.integrate(f, 0.0, 2.0);
+  const auto again = GkTanhSinh{}.integrate(f, 0.0, 2.0);
+  EXPECT_LT(few.evaluations, full.evaluations / 10);
+  EXPECT_EQ(again.evaluations, full.evaluations);
+  EXPECT_EQ(again.value, full.value);
+}
+
 TEST(GkTanhSinhQuadrature, NonFiniteIntegrandIsANumericalFailure) {
   const auto r = GkTanhSinh{}.integrate([](double x) { return x < 0.5 ? std::nan("") : 1.0; }, 0.0, 1.0);
   EXPECT_EQ(r.status, Status::numerical_failure);
