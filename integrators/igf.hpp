@@ -71,7 +71,7 @@ inline IntegralResult<std::complex<double>> igf_position_delta(double alpha, dou
   return igf_position_delta_detailed(alpha, lambda, theta0, theta1, options).integral;
 }
 
-/// `igf` as a position method (the LaClosedForm of curves/planar/la_position.hpp, registered in
+/// `igf` as a position method (an LaClosedForm, integrators/quadrature.hpp, registered in
 /// integrators/registry.hpp): C(θ1) − C(θ0) of the standard-form curve with slope α and Λ.
 struct Igf {
   static constexpr std::string_view name = "igf";

@@ -400,6 +400,15 @@ concept QuadratureMethod = requires(const M& m, double (*f)(double)) {
   { M::name } -> std::convertible_to<std::string_view>;
 };
 
+/// A closed-form position method of the planar LA curve in standard form (α, Λ): C(θ1) − C(θ0),
+/// e.g. Igf.
+template <class M>
+concept LaClosedForm = requires(const M& m, double alpha, double lambda) {
+  { m.integrate_theta(alpha, lambda, 0.0, 1.0) } -> std::same_as<IntegralResult<std::complex<double>>>;
+  { m.validate() };
+  { M::name } -> std::convertible_to<std::string_view>;
+};
+
 /// Running integral ∫_{ts[0]}^{ts[k]} f for every k, piece by piece; counts and error
 /// estimates accumulate. ts must be monotonic (either direction). Rk4 runs as one Rk4Sweep
 /// (shared end values; the estimate is the sweep's, not a sum of per-piece estimates).

@@ -63,6 +63,15 @@ inline void merge_status(PositionResult& r, Status s, const std::string& message
   }
 }
 
+/// Sets r's position, error estimate and evaluations from one quadrature call from the reference
+/// point, and merges its status.
+inline void take_integral(PositionResult& r, const IntegralResult<std::complex<double>>& piece) {
+  r.point.position = piece.value;
+  r.error_estimate = piece.error_estimate;
+  r.evaluations = piece.evaluations;
+  merge_status(r, piece.status, piece.message);
+}
+
 /// ok < fell_back < tolerance_not_met < the statuses that are not usable.
 inline int severity(Status s) {
   return s == Status::ok ? 0 : s == Status::fell_back ? 1 : s == Status::tolerance_not_met ? 2 : 3;

@@ -35,11 +35,7 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method)
   r.point = c.frame_at(s, &k);
   r.form = Form::s;
   detail::merge_status(r, k.status, "kappa(s): " + std::string(to_string(k.status)));
-  auto piece = method.integrate(detail::QuadraticSFormIntegrand{&c}, 0.0, s);
-  r.point.position = piece.value;
-  r.error_estimate = piece.error_estimate;
-  r.evaluations = piece.evaluations;
-  detail::merge_status(r, piece.status, piece.message);
+  detail::take_integral(r, method.integrate(detail::QuadraticSFormIntegrand{&c}, 0.0, s));
   return r;
 }
 
