@@ -65,7 +65,9 @@ size_t SpaceCurve::piece_at(double s) const {
 
 double SpaceCurve::standard_s(size_t k, double s) const {
   const SpacePiece& p = pieces_.at(k);
-  return p.s_begin + std::clamp((s - starts_.at(k)) / placement_.scale, 0.0, p.s_end - p.s_begin);
+  // The piece's ends map exactly (the scaled difference may miss s_end by an ulp).
+  if (s >= starts_.at(k + 1)) return p.s_end;
+  return p.s_begin + std::clamp((s - starts_[k]) / placement_.scale, 0.0, p.s_end - p.s_begin);
 }
 
 SpacePoint SpaceCurve::closed_forms(size_t k, double s) const {

@@ -283,6 +283,27 @@ TEST(SpaceCurve, LengthPiecesAndDomain) {
   EXPECT_EQ(c.s_domain().hi, c.length());
 }
 
+TEST(SpaceCurve, PieceEndsMapExactlyToTheirStandardFormEnds) {
+  // s = piece_start(k + 1) is the end of piece k: its standard-form arc length is s_end itself,
+  // not s_begin + (piece_start(k + 1) − piece_start(k)) / scale, which may miss it by an ulp.
+  const LaSpaceCurve law(1, 0.5, 0.7, 0.2, 1.3, TorsionType::type2);
+  int checked = 0;
+  for (double scale : {0.1, 1.0 / 3, 0.7, 2.5, 7.3, 1e-3, 123.456})
+    for (double s_begin : {0.0, 0.1, 0.37})
+      for (double len : {0.3, 0.7, 1.1, 2.9}) {
+        SpacePlacement pl;
+        pl.scale = scale;
+        pl.matrix = scale * Eigen::Matrix3d::Identity();
+        const SpaceCurve c({{law, s_begin, s_begin + len, Frame3{}}, {law, s_begin + len, s_begin + 2 * len, Frame3{}}},
+                           pl, {});
+        EXPECT_EQ(c.standard_s(0, 0.0), s_begin);
+        EXPECT_EQ(c.standard_s(0, c.piece_start(1)), c.pieces()[0].s_end) << scale << " " << s_begin << " " << len;
+        EXPECT_EQ(c.standard_s(1, c.length()), c.pieces()[1].s_end) << scale << " " << s_begin << " " << len;
+        ++checked;
+      }
+  EXPECT_EQ(checked, 84);
+}
+
 TEST(SpaceCurve, ClosedFormsFollowTheLawsInUserUnits) {
   // κ, τ against the case-by-case tables of ρ, μ above; τ < 0 on the mirror image; dκ/ds against
   // central differences of κ.
