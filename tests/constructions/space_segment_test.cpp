@@ -2,9 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <random>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "lac/common/error.hpp"
 #include "lac/constructions/space_drawable_cases.hpp"
@@ -85,68 +90,95 @@ std::pair<double, double> graph_slopes(const std::vector<SpacePoint>& pts) {
   return {slope(xr, yr), slope(xm, ym)};
 }
 
-// Every ODE method of the registry × every N-D solver of the registry, G1 and compound: the
-// solved curve meets P0, v0, P1, v1. magnus6 (the default) on 12 cases per kind, the others on 4
-// (rk4 with h = 1e-3 is ~20× slower).
-TEST(SpaceSegment, EveryIntegratorAndSolverMeetsTheEndConditionsOnDrawableCases) {
-  for (bool compound : {false, true}) {
-    const auto all = cases(compound, 12, compound ? 11 : 7);
-    for (const MethodInfo& integrator : ode_methods()) {
-      SpaceSegmentOptions o;
-      o.integrator.method = parse_ode_method(integrator.name);
-      const bool fast = o.integrator.method == OdeMethod::magnus6;
-      const std::vector<DrawableCase> cs(all.begin(), all.begin() + (fast ? 12 : 4));
-      for (const NonlinearMethodInfo& solver : nonlinear_methods()) {
-        o.solver = solver.method;
-        int ok = 0;
-        double worst_tangent = 0, worst_reint = 0, worst_pos = 0, worst_ends = 0;
-        for (const auto& c : cs) {
-          const SpaceResult r = solve_case(c, o);
-          const Summary& sum = r.summary;
-          EXPECT_EQ(sum.integrator, integrator.name);
-          EXPECT_EQ(sum.solver, solver.name);
-          EXPECT_GT(sum.constructions, 0);
-          EXPECT_GT(sum.evaluations, sum.constructions);
-          EXPECT_GE(sum.seconds, 0);
-          EXPECT_GE(r.info.runs, 1);
-          if (sum.status != Status::ok) {
-            std::printf("  %s %s %s: %s %s\n", compound ? "compound" : "G1", integrator.name.data(), solver.name.data(),
-                        std::string(to_string(sum.status)).c_str(), sum.message.c_str());
-            EXPECT_TRUE(sum.status == Status::not_converged || sum.status == Status::max_iterations) << sum.message;
-            EXPECT_TRUE(r.curve.pieces().empty());
-            EXPECT_FALSE(sum.residuals.angle.has_value());
-            continue;
-          }
-          ++ok;
-          const SpaceCurve& curve = r.curve;
-          ASSERT_EQ(curve.pieces().size(), compound ? 2u : 1u);
-          EXPECT_EQ(curve.ode_options().method, o.integrator.method);
-          const double chord = (c.ends.p1 - c.ends.p0).norm();
-          worst_tangent = std::max(worst_tangent, *sum.residuals.angle);
-          worst_reint = std::max(worst_reint, angle(reintegrated_end_tangent(curve), c.ends.v1.normalized()));
-          worst_pos = std::max(worst_pos, *sum.residuals.position / chord);
-          // the curve's own evaluation at both ends
-          const SpacePoint start = curve.frame_at(0), end = curve.frame_at(curve.length());
-          ASSERT_EQ(end.status, Status::ok) << end.message;
-          worst_ends = std::max({worst_ends, (start.p - c.ends.p0).norm() / chord, angle(start.t, c.ends.v0.normalized()),
-                                 (end.p - c.ends.p1).norm() / chord, angle(end.t, r.info.end_tangent)});
-          EXPECT_EQ(r.info.joint.has_value(), compound);
-          EXPECT_EQ(r.info.torsion_sign, curve.placement().torsion_sign);
-          EXPECT_GT(curve.length(), chord * (1 - 1e-12));
-        }
-        std::printf("%-8s %-7s %-7s: %d/%zu ok; worst tangent error %.2e (re-integrated with rk45 %.2e), end position "
-                    "%.2e, curve at its ends %.2e\n",
-                    compound ? "compound" : "G1", integrator.name.data(), solver.name.data(), ok, cs.size(),
-                    worst_tangent, worst_reint, worst_pos, worst_ends);
-        EXPECT_GE(ok, static_cast<int>(cs.size()) - 1) << "success rate on drawable cases";
-        EXPECT_LE(worst_tangent, tol::kTangent);
-        EXPECT_LE(worst_reint, tol::kTangent);
-        EXPECT_LE(worst_pos, tol::kPosition);
-        EXPECT_LE(worst_ends, tol::kPosition);
-      }
-    }
-  }
+// One test per construction (G1, compound) × ODE method of the registry × N-D solver of the
+// registry: the solved curve meets P0, v0, P1, v1. magnus6 (the default) on 12 cases per kind, the
+// others on 4 (rk4 with h = 1e-3 is ~20× slower).
+struct MethodCase {
+  bool compound;
+  std::string_view integrator, solver;
+};
+
+std::vector<MethodCase> method_cases() {
+  std::vector<MethodCase> out;
+  for (bool compound : {false, true})
+    for (const MethodInfo& integrator : ode_methods())
+      for (const NonlinearMethodInfo& solver : nonlinear_methods())
+        out.push_back({compound, integrator.name, solver.name});
+  return out;
 }
+
+void PrintTo(const MethodCase& m, std::ostream* os) {
+  *os << (m.compound ? "compound " : "G1 ") << m.integrator << ' ' << m.solver;
+}
+
+class SpaceSegmentMethods : public ::testing::TestWithParam<MethodCase> {};
+
+TEST_P(SpaceSegmentMethods, MeetsTheEndConditionsOnDrawableCases) {
+  const auto [compound, integrator, solver] = GetParam();
+  SpaceSegmentOptions o;
+  o.integrator.method = parse_ode_method(integrator);
+  o.solver = parse_nonlinear_method(solver);
+  const bool fast = o.integrator.method == OdeMethod::magnus6;
+  const auto all = cases(compound, 12, compound ? 11 : 7);
+  const std::vector<DrawableCase> cs(all.begin(), all.begin() + (fast ? 12 : 4));
+  int ok = 0;
+  double worst_tangent = 0, worst_reint = 0, worst_pos = 0, worst_ends = 0;
+  for (const auto& c : cs) {
+    const SpaceResult r = solve_case(c, o);
+    const Summary& sum = r.summary;
+    EXPECT_EQ(sum.integrator, integrator);
+    EXPECT_EQ(sum.solver, solver);
+    EXPECT_GT(sum.constructions, 0);
+    EXPECT_GT(sum.evaluations, sum.constructions);
+    EXPECT_GE(sum.seconds, 0);
+    EXPECT_GE(r.info.runs, 1);
+    if (sum.status != Status::ok) {
+      std::printf("  %s %s %s: %s %s\n", compound ? "compound" : "G1", integrator.data(), solver.data(),
+                  std::string(to_string(sum.status)).c_str(), sum.message.c_str());
+      EXPECT_TRUE(sum.status == Status::not_converged || sum.status == Status::max_iterations) << sum.message;
+      EXPECT_TRUE(r.curve.pieces().empty());
+      EXPECT_FALSE(sum.residuals.angle.has_value());
+      continue;
+    }
+    ++ok;
+    const SpaceCurve& curve = r.curve;
+    ASSERT_EQ(curve.pieces().size(), compound ? 2u : 1u);
+    EXPECT_EQ(curve.ode_options().method, o.integrator.method);
+    for (size_t k = 0; k < curve.pieces().size(); ++k)  // each piece's ends map exactly
+      EXPECT_EQ(curve.standard_s(k, curve.piece_start(k + 1)), curve.pieces()[k].s_end);
+    const double chord = (c.ends.p1 - c.ends.p0).norm();
+    worst_tangent = std::max(worst_tangent, *sum.residuals.angle);
+    worst_reint = std::max(worst_reint, angle(reintegrated_end_tangent(curve), c.ends.v1.normalized()));
+    worst_pos = std::max(worst_pos, *sum.residuals.position / chord);
+    // the curve's own evaluation at both ends
+    const SpacePoint start = curve.frame_at(0), end = curve.frame_at(curve.length());
+    ASSERT_EQ(end.status, Status::ok) << end.message;
+    worst_ends = std::max({worst_ends, (start.p - c.ends.p0).norm() / chord, angle(start.t, c.ends.v0.normalized()),
+                           (end.p - c.ends.p1).norm() / chord, angle(end.t, r.info.end_tangent)});
+    EXPECT_EQ(r.info.joint.has_value(), compound);
+    EXPECT_EQ(r.info.torsion_sign, curve.placement().torsion_sign);
+    EXPECT_GT(curve.length(), chord * (1 - 1e-12));
+  }
+  std::printf("%-8s %-7s %-7s: %d/%zu ok; worst tangent error %.2e (re-integrated with rk45 %.2e), end position "
+              "%.2e, curve at its ends %.2e\n",
+              compound ? "compound" : "G1", integrator.data(), solver.data(), ok, cs.size(), worst_tangent, worst_reint,
+              worst_pos, worst_ends);
+  EXPECT_GE(ok, static_cast<int>(cs.size()) - 1) << "success rate on drawable cases";
+  EXPECT_LE(worst_tangent, tol::kTangent);
+  EXPECT_LE(worst_reint, tol::kTangent);
+  EXPECT_LE(worst_pos, tol::kPosition);
+  EXPECT_LE(worst_ends, tol::kPosition);
+}
+
+// Names such as G1_magnus6_newton, compound_rk4_simplex.
+INSTANTIATE_TEST_SUITE_P(EveryIntegratorAndSolver, SpaceSegmentMethods, ::testing::ValuesIn(method_cases()),
+                         [](const ::testing::TestParamInfo<MethodCase>& info) {
+                           std::string name = std::string(info.param.compound ? "compound_" : "G1_") +
+                                              std::string(info.param.integrator) + "_" + std::string(info.param.solver);
+                           for (char& ch : name)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return name;
+                         });
 
 // The construction at given unknowns returns the same type: status by its end-tangent error, one
 // construction, and a curve whose evaluation reproduces its end data.
@@ -168,7 +200,9 @@ TEST(SpaceSegment, ConstructionAtGivenUnknownsReturnsTheCurve) {
         EXPECT_LE((end.p - c.ends.p1).norm() / chord, tol::kPosition);
         EXPECT_LE(angle(end.t, r.info.end_tangent), tol::kPosition);
         EXPECT_NEAR(*r.summary.residuals.angle, angle(r.info.end_tangent, c.ends.v1), 1e-15);
-        if (mirror) EXPECT_LT(end.tau, 0);
+        if (mirror) {
+          EXPECT_LT(end.tau, 0);
+        }
       }
     }
   }
@@ -293,6 +327,7 @@ TEST(SpaceSegment, CompoundWithEqualSlopesIsTheMonotonicSegment) {
     sp.r_theta = 0.4;
     const SpaceResult k = construct_compound_space_segment(c.ends, sp, law.lambda(), law.nu(), g.info.torsion_sign < 0);
     ASSERT_TRUE(k.usable()) << k.summary.message;
+    ASSERT_EQ(k.curve.pieces().size(), 2u);
     const SpacePiece &k0 = k.curve.pieces()[0], &k1 = k.curve.pieces()[1];
     EXPECT_NEAR(k1.law.lambda(), law.lambda(), 1e-13 * law.lambda());
     EXPECT_NEAR(k1.law.nu(), law.nu(), 1e-12 * law.nu());
