@@ -69,6 +69,25 @@ TEST(CliSpace, EveryIntegratorByNameAndUniformPoints) {
   EXPECT_NE(r.out.find("integrator"), std::string::npos) << r.out;
 }
 
+TEST(CliSpace, EveryIntegratorWithEverySolver) {
+  for (const char* integrator : {"magnus6", "rk45", "rk4"})
+    for (const char* solver : {"newton", "ceres", "simplex"}) {
+      const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --points 3 " +
+                             "--integrator " + integrator + " --solver " + solver);
+      ASSERT_EQ(r.status, 0) << integrator << " " << solver << ": " << r.out;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["integrator"], integrator);
+      EXPECT_EQ(j["solver"], solver);
+      EXPECT_EQ(j["status"], "ok") << integrator << " " << solver << ": " << j["message"];
+      EXPECT_LE(j["tangent_error"].get<double>(), 1e-10);
+      ASSERT_EQ(j["points"].size(), 3u);
+      const auto& last = j["points"].back();
+      EXPECT_NEAR(last["x"].get<double>(), 0.36235775447667362, 1e-12) << integrator << " " << solver;
+      EXPECT_NEAR(last["y"].get<double>(), 0.93203908596722629, 1e-12) << integrator << " " << solver;
+      EXPECT_NEAR(last["z"].get<double>(), 0.0, 1e-12) << integrator << " " << solver;
+    }
+}
+
 TEST(CliSpace, BadInputExitsWithStatus2NamingTheParameter) {
   auto r = run_lac("space --p0 0,0,0 --v0 1,0,0 --p1 2,0,0 --v1 0,1,0 --alpha 0 --beta 0 --omega 0.1 --type 1");
   EXPECT_EQ(r.status, 2) << r.out;
