@@ -24,7 +24,7 @@ const std::vector<lac::DrawableCase>& random_cases(bool compound) {
   return compound ? comp : g1;
 }
 
-lac::SpaceSegmentResult solve(const lac::DrawableCase& c, const lac::SpaceSegmentOptions& o) {
+lac::Result<lac::SpaceCurve, lac::SpaceInfo> solve(const lac::DrawableCase& c, const lac::SpaceSegmentOptions& o) {
   return c.compound ? lac::solve_compound_space_segment(c.ends, c.spec, o) : lac::solve_g1_space_segment(c.ends, c.g1(), o);
 }
 
@@ -36,9 +36,9 @@ void run_random(benchmark::State& state, bool compound, lac::NonlinearMethod sol
   long constructions = 0;
   for (auto _ : state) {
     const auto r = solve(cases[i++ % cases.size()], o);
-    benchmark::DoNotOptimize(r.length);
-    ok += r.status == lac::Status::ok;
-    constructions += r.evaluations;
+    benchmark::DoNotOptimize(r.curve.length());
+    ok += r.summary.status == lac::Status::ok;
+    constructions += r.summary.constructions;
     ++n;
   }
   state.counters["success"] = static_cast<double>(ok) / static_cast<double>(n);
@@ -47,17 +47,16 @@ void run_random(benchmark::State& state, bool compound, lac::NonlinearMethod sol
 
 void run_fig5a(benchmark::State& state, bool compound, lac::NonlinearMethod solver) {
   const lac::CompoundSpaceSpec spec{-1, 1, -1, 1, 0.1, 0.5, lac::TorsionType::type1};
-  lac::Status st;
-  const lac::SpaceEndpoints e = lac::drawable_endpoints(spec, compound, 0.2, 2.5, 1.2, &st);
+  const lac::SpaceEndpoints e = lac::drawable_endpoints(spec, compound, 0.2, 2.5, 1.2).info.ends;
   lac::DrawableCase c{e, spec, compound, 0.2, 2.5, 1.2};
   lac::SpaceSegmentOptions o;
   o.solver = solver;
   long constructions = 0, n = 0;
   for (auto _ : state) {
     const auto r = solve(c, o);
-    benchmark::DoNotOptimize(r.length);
-    if (r.status != lac::Status::ok) state.SkipWithError("not solved");
-    constructions += r.evaluations;
+    benchmark::DoNotOptimize(r.curve.length());
+    if (r.summary.status != lac::Status::ok) state.SkipWithError("not solved");
+    constructions += r.summary.constructions;
     ++n;
   }
   state.counters["constructions"] = static_cast<double>(constructions) / static_cast<double>(std::max(1L, n));

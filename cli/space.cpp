@@ -1,10 +1,11 @@
 // lac space: G1 or compound-rhythm LA space segment between two points with end tangents (000).
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <vector>
 
 #include "cli/command.hpp"
-#include "io/timing.hpp"
 #include "lac/constructions/space_segment.hpp"
 
 namespace lac::cli {
@@ -37,53 +38,58 @@ void run(const SpaceArgs& a) {
   const bool compound = a.alpha1 || a.beta1 || a.r_theta;
   SpaceSegmentOptions o;
   o.solver = parse_nonlinear_method(a.solver);
-  o.frenet.method = parse_ode_method(a.integrator);
-  if (a.tol) o.frenet.rtol = *a.tol, o.frenet.atol = 0.1 * *a.tol;
+  o.integrator.method = parse_ode_method(a.integrator);
+  if (a.tol) o.integrator.rtol = *a.tol, o.integrator.atol = 0.1 * *a.tol;
   o.tangent_tolerance = a.tangent_tolerance;
   if (a.points < 0 || a.points == 1) throw_input_error("lac space", "points", a.points, "0 or [2, inf)");
-  io::Stopwatch clock;
-  SpaceSegmentResult r;
-  if (compound) {
-    const CompoundSpaceSpec spec{a.alpha, a.alpha1.value_or(a.alpha), a.beta, a.beta1.value_or(a.beta), a.omega,
-                                 a.r_theta.value_or(0.5), type};
-    r = solve_compound_space_segment(ends, spec, o);
-  } else {
-    r = solve_g1_space_segment(ends, {a.alpha, a.beta, a.omega, type}, o);
-  }
-  const double seconds = clock.seconds();
-  std::vector<SpaceSample> pts;
-  if (a.points >= 2 && !r.pieces.empty()) pts = space_segment_points(r, std::max(a.points, 2 * static_cast<int>(r.pieces.size())));
+  const Result<SpaceCurve, SpaceInfo> r =
+      compound ? solve_compound_space_segment(ends,
+                                              {a.alpha, a.alpha1.value_or(a.alpha), a.beta, a.beta1.value_or(a.beta),
+                                               a.omega, a.r_theta.value_or(0.5), type},
+                                              o)
+               : solve_g1_space_segment(ends, {a.alpha, a.beta, a.omega, type}, o);
+  const Summary& sum = r.summary;
+  const SpaceCurve& curve = r.curve;
+  const bool drawn = !curve.pieces().empty();
+  std::vector<SpacePoint> pts;
+  if (a.points >= 2 && drawn) pts = curve.sample(a.points);
+  const double scale = drawn ? curve.placement().scale : 0.0;
+  const double tangent_error = sum.residuals.angle.value_or(std::numeric_limits<double>::infinity());
+  auto optional_json = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
 
   const Format fmt = parse_format(*a.format);
   if (fmt == Format::json) {
     nlohmann::json segs = nlohmann::json::array();
-    for (const auto& p : r.pieces)
-      segs.push_back({{"alpha", p.alpha}, {"beta", p.beta}, {"lambda", p.lambda}, {"omega", p.omega}, {"nu", p.nu},
-                      {"type", static_cast<int>(p.type)}, {"s_begin", p.s_begin}, {"s_end", p.s_end},
-                      {"length", r.scale * (p.s_end - p.s_begin)}});
-    nlohmann::json j = {{"status", std::string(to_string(r.status))},
-                        {"message", r.message},
+    for (const SpacePiece& p : curve.pieces())
+      segs.push_back({{"alpha", p.law.alpha()}, {"beta", p.law.beta()}, {"lambda", p.law.lambda()},
+                      {"omega", p.law.omega()}, {"nu", p.law.nu()}, {"type", static_cast<int>(p.law.type())},
+                      {"s_begin", p.s_begin}, {"s_end", p.s_end}, {"length", scale * (p.s_end - p.s_begin)}});
+    nlohmann::json j = {{"status", std::string(to_string(sum.status))},
+                        {"message", sum.message},
                         {"kind", compound ? "compound" : "g1"},
-                        {"solver", std::string(to_string(r.solver))},
-                        {"integrator", std::string(to_string(o.frenet.method))},
-                        {"length", r.pieces.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.length)},
-                        {"tangent_error", std::isfinite(r.tangent_error) ? nlohmann::json(r.tangent_error) : nlohmann::json(nullptr)},
-                        {"position_error", r.pieces.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.position_error)},
-                        {"torsion_sign", r.torsion_sign},
-                        {"iterations", r.iterations},
-                        {"evaluations", r.evaluations},
-                        {"ode_evaluations", r.ode_evaluations},
-                        {"solver_runs", r.runs},
-                        {"seconds", seconds},
+                        {"solver", sum.solver},
+                        {"integrator", sum.integrator},
+                        {"length", drawn ? nlohmann::json(curve.length()) : nlohmann::json(nullptr)},
+                        {"tangent_error", optional_json(sum.residuals.angle)},
+                        {"position_error", optional_json(sum.residuals.position)},
+                        {"torsion_sign", r.info.torsion_sign},
+                        {"iterations", sum.iterations},
+                        {"evaluations", sum.constructions},
+                        {"ode_evaluations", sum.evaluations},
+                        {"solver_runs", r.info.runs},
+                        {"seconds", sum.seconds},
                         {"segments", segs}};
-    if (compound && !r.pieces.empty()) j["joint"] = vec_json(r.joint);
-    if (!r.pieces.empty()) j["end_tangent"] = vec_json(r.end_tangent);
+    if (r.info.joint && drawn) j["joint"] = vec_json(*r.info.joint);
+    if (drawn) j["end_tangent"] = vec_json(r.info.end_tangent);
     if (!pts.empty()) {
       nlohmann::json arr = nlohmann::json::array();
-      for (const auto& p : pts)
-        arr.push_back({{"s", p.s}, {"x", p.p.x()}, {"y", p.p.y()}, {"z", p.p.z()}, {"tangent", vec_json(p.t)},
-                       {"normal", vec_json(p.n)}, {"binormal", vec_json(p.b)}, {"kappa", p.kappa}, {"tau", p.tau},
-                       {"segment", p.piece}});
+      for (const SpacePoint& p : pts) {
+        nlohmann::json q = {{"s", p.s}, {"x", p.p.x()}, {"y", p.p.y()}, {"z", p.p.z()}, {"tangent", vec_json(p.t)},
+                            {"normal", vec_json(p.n)}, {"binormal", vec_json(p.b)}, {"kappa", p.kappa}, {"tau", p.tau},
+                            {"segment", p.piece}};
+        if (p.status != Status::ok) q["status"] = std::string(to_string(p.status)), q["message"] = p.message;
+        arr.push_back(q);
+      }
       j["points"] = arr;
     }
     std::cout << j.dump(2) << "\n";
@@ -92,14 +98,17 @@ void run(const SpaceArgs& a) {
   std::cout.precision(17);
   if (pts.empty()) {
     std::cout << "status,length,tangent_error,iterations,evaluations,seconds,segments\n";
-    std::cout << to_string(r.status) << ',' << r.length << ',' << r.tangent_error << ',' << r.iterations << ','
-              << r.evaluations << ',' << seconds << ',' << r.pieces.size() << "\n";
+    std::cout << to_string(sum.status) << ',' << curve.length() << ',' << tangent_error << ',' << sum.iterations << ','
+              << sum.constructions << ',' << sum.seconds << ',' << curve.pieces().size() << "\n";
     return;
   }
-  std::cout << "# status " << to_string(r.status) << ", length " << r.length << ", tangent_error " << r.tangent_error
-            << ", iterations " << r.iterations << ", seconds " << seconds << "\n";
+  std::cout << "# status " << to_string(sum.status) << ", length " << curve.length() << ", tangent_error "
+            << tangent_error << ", iterations " << sum.iterations << ", seconds " << sum.seconds << "\n";
+  for (const SpacePoint& p : pts)
+    if (p.status != Status::ok)
+      std::cout << "# point at s = " << p.s << ": " << to_string(p.status) << " (" << p.message << ")\n";
   std::cout << "s,x,y,z,tx,ty,tz,kappa,tau,segment\n";
-  for (const auto& p : pts)
+  for (const SpacePoint& p : pts)
     std::cout << p.s << ',' << p.p.x() << ',' << p.p.y() << ',' << p.p.z() << ',' << p.t.x() << ',' << p.t.y() << ','
               << p.t.z() << ',' << p.kappa << ',' << p.tau << ',' << p.piece << "\n";
 }
@@ -120,12 +129,14 @@ void setup(CLI::App& app) {
   sub->add_option("--alpha1", a->alpha1, "Compound: LCG slope of the second segment (default --alpha)");
   sub->add_option("--beta1", a->beta1, "Compound: LTG slope of the second segment (default --beta)");
   sub->add_option("--r-theta", a->r_theta, "Compound: cone ratio r_theta in (0, 1) placing the joint (default 0.5)");
-  sub->add_option("--solver", a->solver, "simplex (000's) | ceres | newton")->capture_default_str();
+  std::string solvers;
+  for (const NonlinearMethodInfo& m : nonlinear_methods()) solvers.append(solvers.empty() ? "" : " | ").append(m.name);
+  sub->add_option("--solver", a->solver, "N-D solver (simplex is 000's): " + solvers)->capture_default_str();
   sub->add_option("--integrator", a->integrator, "Frenet integration: " + method_names_text(ode_methods(), " | "))
       ->capture_default_str();
   sub->add_option("--tol", a->tol, "Integration rtol (default 1e-10; atol = tol/10)");
   sub->add_option("--tangent-tolerance", a->tangent_tolerance, "Success: end-tangent error <= this (rad)")->capture_default_str();
-  sub->add_option("--points", a->points, "Also output this many curve points (0: none)")->capture_default_str();
+  sub->add_option("--points", a->points, "Also output this many curve points, uniform in arc length (0: none)")->capture_default_str();
   a->format = add_format_option(*sub, {"json", "csv"});
   sub->callback([a] { run(*a); });
 }

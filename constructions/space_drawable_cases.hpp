@@ -41,9 +41,9 @@ inline DrawableCase random_drawable_case(std::mt19937_64& rng, bool compound, bo
     c.lambda0 = log_u(0.2, 3);
     c.nu0 = log_u(0.5, 4);
     c.theta = u(0.3, 1.2);
-    Status st = Status::no_solution;
-    const SpaceEndpoints local = drawable_endpoints(c.spec, compound, c.lambda0, c.nu0, c.theta, &st);
-    if (st != Status::ok) continue;
+    const auto drawn = drawable_endpoints(c.spec, compound, c.lambda0, c.nu0, c.theta);
+    if (drawn.summary.status != Status::ok) continue;
+    const SpaceEndpoints& local = drawn.info.ends;
     Eigen::Vector4d qv;
     do qv = Eigen::Vector4d(u(-1, 1), u(-1, 1), u(-1, 1), u(-1, 1));
     while (qv.norm() > 1 || qv.norm() < 1e-3);  // uniform in the ball → uniform rotation

@@ -3,9 +3,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "lac/common/error.hpp"
 #include "lac/solvers/nonlinear.hpp"
@@ -23,6 +25,7 @@ constexpr double kLogNuMin = -10, kLogNuMax = 15;
 
 // The problem in the local frame of 000 §2.2 (P0 at 0, v0 = +x, P1 in the xy plane, y > 0).
 struct Problem {
+  SpaceEndpoints ends;            // as given
   Eigen::Matrix3d local_to_user;  // columns e1 = v̂0, e2, e3 = e1 × e2
   Vec3 origin;
   double distance = 0;            // |P1 − P0|
@@ -35,11 +38,12 @@ struct Problem {
   const SpaceSegmentOptions* opt = nullptr;
 };
 
-// One construction for given (Λ0, ν0).
+// One construction for given (Λ0, ν0). Undefined: `status` and `why` say why.
 struct Trial {
   bool defined = false;
+  Status status = Status::no_solution;
   std::string why;
-  SpacePiece piece0, piece1;
+  std::optional<SpacePiece> piece0, piece1;
   Frame3 joint, end;       // standard form
   double phi = 0;          // rotation about x that brings the end point into the xy plane
   double scale = 0;
@@ -63,6 +67,7 @@ Problem make_problem(const char* who, const SpaceEndpoints& e, bool mirror) {
   const double scale_ref = std::max({e.p0.cwiseAbs().maxCoeff(), e.p1.cwiseAbs().maxCoeff(), 1e-300});
   if (!(chord.norm() > 1e-12 * scale_ref)) throw_input_error(who, "p1", "must differ from p0");
   Problem p;
+  p.ends = e;
   const Vec3 e1 = e.v0.normalized();
   p.theta = std::atan2(e1.cross(chord).norm(), e1.dot(chord));
   constexpr double kMinAngle = 1e-8;
@@ -107,21 +112,47 @@ CompoundSpaceSpec as_compound(const G1SpaceSpec& g) {
 }
 
 // Largest s a trial may integrate to from s0: inside the s range (with a margin), and within the
-// remaining turning and torsion-turning budgets. ≤ s0 means no room.
-double s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double torsion_budget, double max_length) {
+// remaining turning and torsion-turning budgets. ≤ s0 means no room. `cap`: the option that
+// binds, or nullptr when the end of the s range does (the curve itself ends there).
+struct Limit {
+  double s = kInf;
+  const char* cap = nullptr;
+};
+Limit s_limit(const LaSpaceCurve& c, double s0, double turn_budget, double torsion_budget, double max_length) {
   const double hi = c.s_range().hi;
-  double lim = std::isfinite(hi) ? hi - 1e-9 * std::max(1.0, std::abs(hi)) : kInf;
-  lim = std::min(lim, max_length);  // the turning of α < 1 is bounded: the budgets may never bind
-  lim = std::min(lim, c.s_at_turning(c.turning(s0) + turn_budget));
-  lim = std::min(lim, c.s_at_torsion_turning(c.torsion_turning(s0) + torsion_budget));
+  Limit lim{std::isfinite(hi) ? hi - 1e-9 * std::max(1.0, std::abs(hi)) : kInf, nullptr};
+  auto take = [&lim](double s, const char* cap) {
+    if (s < lim.s) lim = {s, cap};
+  };
+  take(max_length, "max_length");  // the turning of α < 1 is bounded: the budgets may never bind
+  take(c.s_at_turning(c.turning(s0) + turn_budget), "max_turning");
+  take(c.s_at_torsion_turning(c.torsion_turning(s0) + torsion_budget), "max_torsion_turning");
   return lim;
+}
+
+// A trial that stops short of its cone: a curve that ends first has no solution for these
+// unknowns; one stopped by a cap of the options reached that cap.
+void stopped_short(Trial& t, const Limit& lim, const std::string& what) {
+  if (lim.cap) {
+    t.status = Status::max_iterations;
+    t.why = what + " does not meet its cone before the cap " + lim.cap + " (at s = " + format_number(lim.s) + ")";
+  } else {
+    t.status = Status::no_solution;
+    t.why = what + " ends (its s range, s < " + format_number(lim.s) + " with the margin) before it meets its cone";
+  }
+}
+
+// A trial whose integration failed: its status and message.
+void integration_failed(Trial& t, const FrenetResult& r) {
+  t.status = r.status;
+  t.why = r.message;
 }
 
 // `frenet`: integration settings (default: the options'); screening uses coarser ones.
 Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const OdeOptions* frenet) {
   Trial t;
   const SpaceSegmentOptions& o = *pb.opt;
-  const OdeOptions& fo = frenet ? *frenet : o.frenet;
+  const OdeOptions& fo = frenet ? *frenet : o.integrator;
   const CompoundSpaceSpec& s = pb.spec;
   if (!(lambda0 >= 0) || !(nu0 > 0) || !std::isfinite(lambda0) || !std::isfinite(nu0)) {
     t.why = "lambda0 or nu0 out of range";
@@ -129,18 +160,22 @@ Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const O
   }
   const LaSpaceCurve c0(s.alpha0, s.beta0, lambda0, s.omega0, nu0, s.type);
   const double cone0 = pb.compound ? s.r_theta * pb.theta : pb.theta;
-  const double lim0 = s_limit(c0, 0.0, o.max_turning, o.max_torsion_turning, o.max_length);
-  if (!(lim0 > 0)) {
-    t.why = "no room in the s range";
+  const Limit lim0 = s_limit(c0, 0.0, o.max_turning, o.max_torsion_turning, o.max_length);
+  if (!(lim0.s > 0)) {
+    stopped_short(t, lim0, "segment 0");
     return t;
   }
-  const FrenetResult a = integrate_to_cone(c0, Frame3{}, 0.0, lim0, cone0, fo);
+  const FrenetResult a = integrate_to_cone(c0, Frame3{}, 0.0, lim0.s, cone0, fo);
   t.ode_evaluations += a.evaluations;
-  if (a.status != Status::ok || !a.met_cone) {
-    t.why = a.status != Status::ok ? a.message : "segment 0 does not meet the cone before its s range or turning cap ends";
+  if (a.status != Status::ok) {
+    integration_failed(t, a);
     return t;
   }
-  t.piece0 = {s.alpha0, s.beta0, lambda0, s.omega0, nu0, s.type, 0.0, a.s};
+  if (!a.met_cone) {
+    stopped_short(t, lim0, "segment 0");
+    return t;
+  }
+  t.piece0 = SpacePiece{c0, 0.0, a.s, Frame3{}};
   t.joint = a.frame;
   Frame3 end = a.frame;
   if (pb.compound) {
@@ -155,19 +190,23 @@ Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const O
       t.why = "joint arc length outside segment 1's s range";
       return t;
     }
-    const double lim1 = s_limit(c1, j.s_c, o.max_turning - c0.turning(a.s), o.max_torsion_turning - c0.torsion_turning(a.s),
+    const Limit lim1 = s_limit(c1, j.s_c, o.max_turning - c0.turning(a.s), o.max_torsion_turning - c0.torsion_turning(a.s),
                                o.max_length);
-    if (!(lim1 > j.s_c) || !std::isfinite(lim1)) {
-      t.why = "no room for segment 1";
+    if (!(lim1.s > j.s_c) || !std::isfinite(lim1.s)) {
+      stopped_short(t, lim1, "segment 1");
       return t;
     }
-    const FrenetResult b = integrate_to_cone(c1, a.frame, j.s_c, lim1, pb.theta, fo);
+    const FrenetResult b = integrate_to_cone(c1, a.frame, j.s_c, lim1.s, pb.theta, fo);
     t.ode_evaluations += b.evaluations;
-    if (b.status != Status::ok || !b.met_cone) {
-      t.why = b.status != Status::ok ? b.message : "segment 1 does not meet the outer cone before its s range or turning cap ends";
+    if (b.status != Status::ok) {
+      integration_failed(t, b);
       return t;
     }
-    t.piece1 = {s.alpha1, s.beta1, j.lambda1, j.omega1, j.nu1, s.type, j.s_c, b.s};
+    if (!b.met_cone) {
+      stopped_short(t, lim1, "segment 1");
+      return t;
+    }
+    t.piece1 = SpacePiece{c1, j.s_c, b.s, a.frame};
     end = b.frame;
   }
   t.end = end;
@@ -176,7 +215,7 @@ Trial construct_unchecked(const Problem& pb, double lambda0, double nu0, const O
   t.end_tangent_local = rot * end.t;
   t.scale = pb.distance / end.p.norm();
   t.defined = std::isfinite(t.scale) && t.scale > 0;
-  if (!t.defined) t.why = "end point at the apex";
+  if (!t.defined) t.why = "the curve meets its cone at the apex P0";
   return t;
 }
 
@@ -187,6 +226,7 @@ Trial construct(const Problem& pb, double lambda0, double nu0, const OdeOptions*
     return construct_unchecked(pb, lambda0, nu0, frenet);
   } catch (const InputError& e) {
     Trial t;
+    t.status = Status::numerical_failure;
     t.why = std::string("trial curve not representable in double precision: ") + e.what();
     return t;
   }
@@ -205,44 +245,55 @@ bool in_box(const Vec2& x) {
   return x[0] >= kLogLambdaMin && x[0] <= kLogLambdaMax && x[1] >= kLogNuMin && x[1] <= kLogNuMax;
 }
 
-SpaceSegmentResult to_result(const Problem& pb, const Trial& t, NonlinearMethod solver) {
-  SpaceSegmentResult r;
-  r.solver = solver;
-  r.frenet = pb.opt->frenet;
-  r.ode_evaluations = t.ode_evaluations;
+using SpaceResult = Result<SpaceCurve, SpaceInfo>;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The result of one construction: its curve (when defined), end-tangent and end-point errors and
+// status; the counters are the caller's.
+SpaceResult to_result(const Problem& pb, const Trial& t) {
+  const SpaceSegmentOptions& o = *pb.opt;
+  SpaceResult r;
+  r.summary.integrator = std::string(to_string(o.integrator.method));
+  r.summary.evaluations = t.ode_evaluations;
+  r.info.ends = pb.ends;
+  r.info.torsion_sign = pb.mirror ? -1 : 1;
   if (!t.defined) {
-    r.status = Status::no_solution;
-    r.message = t.why;
-    r.tangent_error = kInf;
+    r.summary.status = t.status;
+    r.summary.message = t.why;
     return r;
   }
-  r.pieces.push_back(t.piece0);
-  if (pb.compound) r.pieces.push_back(t.piece1);
   const Eigen::Matrix3d rot = Eigen::AngleAxisd(-t.phi, Vec3::UnitX()).toRotationMatrix();
   Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity();
   if (pb.mirror) mirror(2, 2) = -1;
-  r.placement = pb.local_to_user * mirror * rot * t.scale;
-  r.origin = pb.origin;
-  r.scale = t.scale;
-  r.torsion_sign = pb.mirror ? -1 : 1;
-  r.joint_frame = t.joint;
-  double std_length = 0;
-  for (const auto& p : r.pieces) std_length += p.s_end - p.s_begin;
-  r.length = t.scale * std_length;
-  r.tangent_error = tangent_angle(t.end_tangent_local, pb.target);
-  r.end_tangent = (pb.local_to_user * mirror * t.end_tangent_local).normalized();
-  const Vec3 end_user = r.origin + r.placement * t.end.p;
-  r.position_error = (end_user - (pb.origin + pb.local_to_user * Vec3(pb.distance * std::cos(pb.theta),
-                                                                        pb.distance * std::sin(pb.theta), 0)))
-                         .norm();
-  if (pb.compound) r.joint = r.origin + r.placement * t.joint.p;
-  r.status = r.tangent_error <= pb.opt->tangent_tolerance ? Status::ok : Status::tolerance_not_met;
+  const SpacePlacement placement{pb.origin, pb.local_to_user * mirror * rot * t.scale, t.scale, r.info.torsion_sign};
+  std::vector<SpacePiece> pieces{*t.piece0};
+  if (pb.compound) pieces.push_back(*t.piece1);
+  try {
+    r.curve = SpaceCurve(std::move(pieces), placement, o.integrator);
+  } catch (const InputError& e) {  // e.g. a length beyond DBL_MAX
+    r.summary.status = Status::numerical_failure;
+    r.summary.message = std::string("curve not representable in double precision: ") + e.what();
+    return r;
+  }
+  const double tangent_error = tangent_angle(t.end_tangent_local, pb.target);
+  r.info.end_tangent = (pb.local_to_user * mirror * t.end_tangent_local).normalized();
+  const Vec3 end_user = placement.origin + placement.matrix * t.end.p;
+  r.summary.residuals.angle = tangent_error;
+  r.summary.residuals.position =
+      (end_user - (pb.origin + pb.local_to_user * Vec3(pb.distance * std::cos(pb.theta), pb.distance * std::sin(pb.theta), 0)))
+          .norm();
+  if (pb.compound) r.info.joint = placement.origin + placement.matrix * t.joint.p;
+  r.summary.status = tangent_error <= o.tangent_tolerance ? Status::ok : Status::tolerance_not_met;
   return r;
 }
 
 struct RunOutcome {
   Vec2 x;
-  bool success = false;
+  Status status = Status::not_converged;
+  double merit = kInf;  // ‖r‖ (simplex: the end-tangent angle) where the run stopped
   int iterations = 0;
   long evaluations = 0;
   std::string message;
@@ -283,11 +334,12 @@ RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
                                      return true;
                                    }};
   const NonlinearResult res = solve_nonlinear(o.solver, residual, x0, so);
-  return {res.x, res.status == Status::ok, res.iterations, res.evaluations, res.message};
+  return {res.x, res.status, res.merit, res.iterations, res.evaluations, res.message};
 }
 
-SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec, bool compound,
-                         const SpaceSegmentOptions& opt) {
+SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec, bool compound,
+                  const SpaceSegmentOptions& opt) {
+  const auto t_begin = std::chrono::steady_clock::now();
   opt.validate();
   validate_spec(who, spec, compound);
   std::array<Problem, 2> problems = {make_problem(who, ends, false), make_problem(who, ends, true)};
@@ -312,10 +364,11 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
   };
   // End-tangent error of the construction at x for each hand; undefined points are dropped.
   // Screening only ranks starting points: a coarse tolerance (1e-6) is enough and 3–4× cheaper.
-  OdeOptions coarse = opt.frenet;
+  OdeOptions coarse = opt.integrator;
   coarse.rtol = std::max(coarse.rtol, 1e-6);
   coarse.atol = std::max(coarse.atol, 1e-7);
   coarse.h = std::max(coarse.h, 1e-2);
+  std::string last_why = "no start was tried";  // why the last screened trial was undefined
   auto screen = [&](const Vec2& x, std::vector<Candidate>& out, const OdeOptions* fo) {
     for (int h = 0; h < hands; ++h) {
       if (!in_box(x) || ode >= opt.max_ode_evaluations) continue;
@@ -323,27 +376,37 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
       ode += t.ode_evaluations;
       ++evals;
       if (t.defined) out.push_back({tangent_angle(t.end_tangent_local, problems[h].target), h, x});
+      else last_why = t.why;
     }
   };
-  std::string last_message = "no starting point gave a defined curve";
-  auto attempt = [&](const Candidate& c) -> std::optional<SpaceSegmentResult> {
+  auto finish = [&](SpaceResult r) {
+    r.summary.iterations = iterations;
+    r.summary.constructions = evals;
+    r.summary.evaluations = ode;
+    r.summary.integrator = std::string(to_string(opt.integrator.method));
+    r.summary.solver = std::string(to_string(opt.solver));
+    r.info.runs = runs;
+    r.summary.seconds = seconds_since(t_begin);
+    return r;
+  };
+  std::optional<RunOutcome> closest;  // the failed run that stopped nearest to a solution
+  auto attempt = [&](const Candidate& c) -> std::optional<SpaceResult> {
     const Problem& pb = problems[c.hand];
     ++runs;
-    const RunOutcome out = run_solver(pb, c.x, ode);
+    RunOutcome out = run_solver(pb, c.x, ode);
     iterations += out.iterations;
     evals += out.evaluations;
-    if (!out.message.empty()) last_message = out.message;
-    if (!out.success) return std::nullopt;
-    const Trial t = construct(pb, std::exp(out.x[0]), std::exp(out.x[1]));
-    ode += t.ode_evaluations;
-    ++evals;
-    SpaceSegmentResult r = to_result(pb, t, opt.solver);
-    r.iterations = iterations;
-    r.evaluations = evals;
-    r.ode_evaluations = ode;
-    r.runs = runs;
-    if (r.status != Status::ok) return std::nullopt;
-    return r;
+    if (out.status == Status::ok) {
+      const Trial t = construct(pb, std::exp(out.x[0]), std::exp(out.x[1]));
+      ode += t.ode_evaluations;
+      ++evals;
+      SpaceResult r = to_result(pb, t);
+      if (r.summary.status == Status::ok) return finish(std::move(r));
+      out.status = Status::not_converged;
+      out.message = "the solver's solution did not reproduce: " + r.summary.message;
+    }
+    if (!closest || out.merit < closest->merit) closest = std::move(out);
+    return std::nullopt;
   };
   auto by_error = [](const Candidate& a, const Candidate& b) { return a.error < b.error; };
   // Phase 1: the given start, with the hand whose end tangent is closer.
@@ -364,30 +427,38 @@ SpaceSegmentResult solve(const char* who, const SpaceEndpoints& ends, const Comp
     if (runs >= opt.max_starts || ode >= opt.max_ode_evaluations) break;
     if (auto r = attempt(c)) return *r;
   }
-  SpaceSegmentResult r;
-  r.solver = opt.solver;
-  r.tangent_error = kInf;
+  // No curve. The search (the start, then the best points of the grid) is not complete, so a
+  // curve may still exist: not_converged, or the closest run's own status (e.g. max_iterations).
+  SpaceResult r;
+  r.info.ends = ends;
+  const std::string solver(to_string(opt.solver));
+  const std::string searched = std::to_string(runs) + " solver run" + (runs == 1 ? "" : "s") + " (at most max_starts = " +
+                               std::to_string(opt.max_starts) + ") from the start (Lambda0, nu0) = (" +
+                               format_number(lambda_start) + ", " + format_number(opt.nu_start) +
+                               ") and the best points of the 7 x 6 grid of (log Lambda0, log nu0) around it" +
+                               (hands == 2 ? ", both hands" : "");
   if (ode >= opt.max_ode_evaluations) {
-    r.status = Status::max_iterations;
-    r.message = std::string(to_string(opt.solver)) + ": Frenet evaluation budget max_ode_evaluations = " +
-                std::to_string(opt.max_ode_evaluations) + " spent after " + std::to_string(runs) + " solver runs (" +
-                last_message + ")";
+    r.summary.status = Status::max_iterations;
+    r.summary.message = solver + ": Frenet evaluation budget max_ode_evaluations = " +
+                        std::to_string(opt.max_ode_evaluations) + " spent after " + searched +
+                        (closest ? " (closest run: " + closest->message + ")" : " (" + last_why + ")");
+  } else if (!closest) {
+    r.summary.status = Status::not_converged;
+    r.summary.message = solver + ": no start gave a defined curve (the start and the 7 x 6 grid around it" +
+                        (hands == 2 ? ", both hands" : "") + "; last: " + last_why + ")";
   } else {
-    r.status = Status::no_solution;
-    r.message = std::string(to_string(opt.solver)) + ": no curve met the end tangent within " + std::to_string(runs) +
-                " solver runs (" + last_message + ")";
+    r.summary.status = usable(closest->status) ? Status::not_converged : closest->status;
+    r.summary.message = solver + ": no curve met the end tangent within tangent_tolerance = " +
+                        format_number(opt.tangent_tolerance) + " rad after " + searched +
+                        "; the closest run stopped with " + std::string(to_string(closest->status)) + " at residual " +
+                        format_number(closest->merit) + (closest->message.empty() ? "" : ": " + closest->message);
   }
-  r.iterations = iterations;
-  r.evaluations = evals;
-  r.ode_evaluations = ode;
-  r.runs = runs;
-  r.frenet = opt.frenet;
-  return r;
+  return finish(std::move(r));
 }
 
-SpaceSegmentResult construct_only(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
-                                  bool compound, double lambda0, double nu0, bool mirror,
-                                  const SpaceSegmentOptions& opt) {
+SpaceResult construct_only(const char* who, const SpaceEndpoints& ends, const CompoundSpaceSpec& spec, bool compound,
+                           double lambda0, double nu0, bool mirror, const SpaceSegmentOptions& opt) {
+  const auto t_begin = std::chrono::steady_clock::now();
   opt.validate();
   validate_spec(who, spec, compound);
   if (!(lambda0 >= 0) || !std::isfinite(lambda0)) throw_input_error(who, "lambda0", lambda0, "[0, inf)");
@@ -396,9 +467,9 @@ SpaceSegmentResult construct_only(const char* who, const SpaceEndpoints& ends, c
   pb.compound = compound;
   pb.spec = spec;
   pb.opt = &opt;
-  const Trial t = construct(pb, lambda0, nu0);
-  SpaceSegmentResult r = to_result(pb, t, opt.solver);
-  r.evaluations = 1;
+  SpaceResult r = to_result(pb, construct(pb, lambda0, nu0));
+  r.summary.constructions = 1;
+  r.summary.seconds = seconds_since(t_begin);
   return r;
 }
 
@@ -407,7 +478,7 @@ SpaceSegmentResult construct_only(const char* who, const SpaceEndpoints& ends, c
 void SpaceSegmentOptions::validate() const {
   constexpr const char* who = "SpaceSegmentOptions";
   if (!(tangent_tolerance >= 1e-14 && tangent_tolerance < 1)) throw_input_error(who, "tangent_tolerance", tangent_tolerance, "[1e-14, 1)");
-  frenet.validate();
+  integrator.validate();
   if (!(max_turning > 0)) throw_input_error(who, "max_turning", max_turning, "(0, inf]");
   if (!(max_torsion_turning > 0)) throw_input_error(who, "max_torsion_turning", max_torsion_turning, "(0, inf]");
   if (!(max_length > 0) || !std::isfinite(max_length)) throw_input_error(who, "max_length", max_length, "(0, inf)");
@@ -419,77 +490,41 @@ void SpaceSegmentOptions::validate() const {
     throw_input_error(who, "max_ode_evaluations", static_cast<double>(max_ode_evaluations), "[1, inf)");
 }
 
-SpaceSegmentResult solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
-                                          const SpaceSegmentOptions& options) {
+Result<SpaceCurve, SpaceInfo> solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                                     const SpaceSegmentOptions& options) {
   return solve("solve_g1_space_segment", ends, as_compound(spec), false, options);
 }
 
-SpaceSegmentResult solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
-                                                const SpaceSegmentOptions& options) {
+Result<SpaceCurve, SpaceInfo> solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                           const SpaceSegmentOptions& options) {
   return solve("solve_compound_space_segment", ends, spec, true, options);
 }
 
-SpaceSegmentResult construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec, double lambda,
-                                              double nu, bool mirror, const SpaceSegmentOptions& options) {
+Result<SpaceCurve, SpaceInfo> construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                                         double lambda, double nu, bool mirror,
+                                                         const SpaceSegmentOptions& options) {
   return construct_only("construct_g1_space_segment", ends, as_compound(spec), false, lambda, nu, mirror, options);
 }
 
-SpaceSegmentResult construct_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
-                                                    double lambda0, double nu0, bool mirror,
-                                                    const SpaceSegmentOptions& options) {
+Result<SpaceCurve, SpaceInfo> construct_compound_space_segment(const SpaceEndpoints& ends,
+                                                               const CompoundSpaceSpec& spec, double lambda0,
+                                                               double nu0, bool mirror,
+                                                               const SpaceSegmentOptions& options) {
   return construct_only("construct_compound_space_segment", ends, spec, true, lambda0, nu0, mirror, options);
 }
 
-SpaceEndpoints drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0, double nu0,
-                                  double theta, Status* status, const SpaceSegmentOptions& options) {
+Result<SpaceCurve, SpaceInfo> drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0,
+                                                 double nu0, double theta, const SpaceSegmentOptions& options) {
   if (!(theta > 1e-8 && theta < M_PI - 1e-8)) throw_input_error("drawable_endpoints", "theta", theta, "(1e-8, pi - 1e-8)");
-  SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(std::cos(theta), std::sin(theta), 0), Vec3::UnitX()};
-  const SpaceSegmentResult r = construct_only("drawable_endpoints", e, spec, compound, lambda0, nu0, false, options);
-  if (status) *status = r.pieces.empty() ? Status::no_solution : Status::ok;
-  if (!r.pieces.empty()) e.v1 = r.end_tangent;
-  return e;
-}
-
-std::vector<SpaceSample> space_segment_points(const SpaceSegmentResult& r, int n, Status* status) {
-  if (r.pieces.empty()) throw_input_error("space_segment_points", "r", "has no curve (status " + std::string(to_string(r.status)) + ")");
-  const int pieces = static_cast<int>(r.pieces.size());
-  if (n < 2 * pieces) throw_input_error("space_segment_points", "n", n, "[2 per piece, inf)");
-  double total = 0;
-  for (const auto& p : r.pieces) total += p.s_end - p.s_begin;
-  std::vector<SpaceSample> out;
-  Status st = Status::ok;
-  Frame3 start;
-  double s_user = 0;
-  int left = n;
-  for (int i = 0; i < pieces; ++i) {
-    const SpacePiece& pc = r.pieces[static_cast<size_t>(i)];
-    const int m = i + 1 == pieces ? left
-                                  : std::clamp(static_cast<int>(std::lround(n * (pc.s_end - pc.s_begin) / total)), 2,
-                                               left - 2 * (pieces - i - 1));
-    left -= m;
-    const LaSpaceCurve c(pc.alpha, pc.beta, pc.lambda, pc.omega, pc.nu, pc.type);
-    if (i > 0) start = r.joint_frame;
-    Status si = Status::ok;
-    const std::vector<Frame3> frames = sample_frenet(c, start, pc.s_begin, pc.s_end, m, r.frenet, &si);
-    if (si != Status::ok) st = si;
-    for (int k = 0; k < m; ++k) {
-      const Frame3& f = frames[static_cast<size_t>(k)];
-      const double s_std = pc.s_begin + (pc.s_end - pc.s_begin) * k / (m - 1);
-      SpaceSample smp;
-      smp.piece = i;
-      smp.s = s_user + r.scale * (s_std - pc.s_begin);
-      smp.p = r.origin + r.placement * f.p;
-      smp.t = (r.placement * f.t).normalized();
-      smp.n = (r.placement * f.n).normalized();
-      smp.b = smp.t.cross(smp.n);
-      smp.kappa = c.kappa(s_std) / r.scale;
-      smp.tau = r.torsion_sign * c.tau(s_std) / r.scale;
-      out.push_back(smp);
-    }
-    s_user += r.scale * (pc.s_end - pc.s_begin);
-  }
-  if (status) *status = st;
-  return out;
+  const SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(std::cos(theta), std::sin(theta), 0), Vec3::UnitX()};
+  SpaceResult r = construct_only("drawable_endpoints", e, spec, compound, lambda0, nu0, false, options);
+  if (!r.usable()) return r;
+  // v1 := the construction's own end tangent, which it then meets exactly.
+  r.info.ends.v1 = r.info.end_tangent;
+  r.summary.residuals.angle = 0.0;
+  r.summary.status = Status::ok;
+  r.summary.message.clear();
+  return r;
 }
 
 }  // namespace lac

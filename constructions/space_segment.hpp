@@ -15,14 +15,14 @@
 //
 // The standard form has positive torsion (right-handed). With allow_mirror the mirror-image
 // problem (z → −z in the local frame) is tried as well; the result then has negative torsion.
-#include <Eigen/Core>
-#include <string>
-#include <string_view>
-#include <vector>
+//
+// Every function returns Result<SpaceCurve, SpaceInfo> (common/summary.hpp): the curve
+// (curves/space/space_curve.hpp), a Summary (status, counters, end-tangent and end-point errors,
+// time, integrator and solver names) and the 000-specific details.
+#include <optional>
 
-#include "lac/common/status.hpp"
-#include "lac/curves/space/frenet.hpp"
-#include "lac/curves/space/la_space_curve.hpp"
+#include "lac/common/summary.hpp"
+#include "lac/curves/space/space_curve.hpp"
 #include "lac/solvers/nonlinear.hpp"
 
 namespace lac {
@@ -48,11 +48,12 @@ struct CompoundSpaceSpec {
 };
 
 struct SpaceSegmentOptions {
-  NonlinearMethod solver = NonlinearMethod::newton;  ///< newton is the fastest here (see docs/space_curves.md)
+  /// Frenet integration, any method of the ODE registry: default order-6 Magnus, rtol 1e-10,
+  /// atol 1e-11 (end tangents accurate to ~1e-13 rad, tests/constructions); rk45 / rk4 selectable.
+  OdeOptions integrator{OdeMethod::magnus6, 1e-10, 1e-11};
+  /// Any method of the N-D registry; newton is the fastest here (see docs/space_curves.md).
+  NonlinearMethod solver = NonlinearMethod::newton;
   double tangent_tolerance = 1e-11;  ///< success: end-tangent angle error ≤ this (rad)
-  /// Integration: order-6 Magnus, rtol 1e-10, atol 1e-11 (end tangents accurate to ~1e-13 rad,
-  /// tests/space); rk45 / rk4 selectable.
-  OdeOptions frenet{OdeMethod::magnus6, 1e-10, 1e-11};
   double max_turning = 4 * M_PI;     ///< a trial curve may turn its tangent by at most this (∫κ ds)
   double max_torsion_turning = 40 * M_PI;  ///< and rotate its frame about T by at most this (∫τ ds)
   double max_length = 100;           ///< and be at most this long in standard form (ρ(0) = 1)
@@ -72,68 +73,48 @@ struct SpaceSegmentOptions {
   void validate() const;
 };
 
-/// One LA piece in its own standard form, drawn from s_begin to s_end.
-struct SpacePiece {
-  double alpha = 0, beta = 0, lambda = 0, omega = 0, nu = 1;
-  TorsionType type = TorsionType::type1;
-  double s_begin = 0, s_end = 0;  ///< standard-form arc length
-};
-
-struct SpaceSegmentResult {
-  Status status = Status::no_solution;
-  std::string message;
-  NonlinearMethod solver = NonlinearMethod::newton;
-  std::vector<SpacePiece> pieces;  ///< 1 (G1) or 2 (compound); empty when no curve was drawn
-  double length = 0;               ///< user units
-  double scale = 0;                ///< user length per standard-form length
-  double tangent_error = 0;        ///< angle(end tangent, v1) in rad (inf when no curve)
-  double position_error = 0;       ///< |end point − P1|, user units
-  Vec3 end_tangent = Vec3::Zero(); ///< unit end tangent of the curve, user coordinates
-  Vec3 joint = Vec3::Zero();       ///< compound: joint position, user coordinates
-  int torsion_sign = 1;            ///< −1: mirror image (negative torsion)
-  int iterations = 0;              ///< solver iterations, all runs
-  long evaluations = 0;            ///< curve constructions (ODE solves to the cone), all runs
-  long ode_evaluations = 0;        ///< Frenet right-hand-side evaluations, all runs
-  int runs = 0;                    ///< solver runs (starts × hands) used
-  // Placement: user = origin + placement · standard-form point (placement includes the scale).
-  Eigen::Matrix3d placement = Eigen::Matrix3d::Identity();
-  Vec3 origin = Vec3::Zero();
-  Frame3 joint_frame;              ///< standard-form frame at the joint (segment 1 starts there)
-  OdeOptions frenet{};             ///< integration settings the curve was made with
-};
-
-/// A point of a solved segment in user coordinates; kappa, tau in user units (tau < 0 mirrored).
-struct SpaceSample {
-  double s = 0;  ///< arc length from P0, user units
-  Vec3 p, t, n, b;
-  double kappa = 0, tau = 0;
-  int piece = 0;
+/// What a 000 construction adds to its curve. The pieces' α, β, Λ, Ω, ν, type and standard-form
+/// arc lengths are the curve's (SpaceCurve::pieces()); the Summary counts constructions (trial
+/// curves integrated to the cone) and evaluations (Frenet right-hand sides).
+struct SpaceInfo {
+  SpaceEndpoints ends;              ///< the endpoint data of the construction (user coordinates)
+  Vec3 end_tangent = Vec3::Zero();  ///< unit end tangent of the curve, user coordinates (0: no curve)
+  std::optional<Vec3> joint;        ///< compound: joint position, user coordinates
+  int torsion_sign = 1;             ///< −1: mirror image (negative torsion)
+  int runs = 0;                     ///< solver runs (starts × hands) used
 };
 
 /// Solves the G1 segment. InputError for invalid input (zero or non-finite vectors, P1 = P0,
-/// v0 parallel to P1 − P0, parameters out of range); a Status when no curve is found.
-SpaceSegmentResult solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
-                                          const SpaceSegmentOptions& options = {});
-/// Solves the compound-rhythm segment (000 §4.3).
-SpaceSegmentResult solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
-                                                const SpaceSegmentOptions& options = {});
+/// v0 parallel to P1 − P0, parameters out of range). Status ok when the end tangent is met within
+/// tangent_tolerance; otherwise the curve is empty and the status says why: max_iterations (the
+/// ODE budget was spent, or the solver run that came closest hit its cap), not_converged (the
+/// search — the start and the screened grid, both hands — found no curve; one may still exist),
+/// or the closest run's own failure status (docs/space_curves.md).
+Result<SpaceCurve, SpaceInfo> solve_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                                     const SpaceSegmentOptions& options = {});
+/// Solves the compound-rhythm segment (000 §4.3); statuses as solve_g1_space_segment.
+Result<SpaceCurve, SpaceInfo> solve_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
+                                                           const SpaceSegmentOptions& options = {});
 
-/// The construction at given (Λ0, ν0) without solving (v1 only enters tangent_error): the curve
-/// that meets P0, v0, P1 for these unknowns. Status no_solution when it does not meet the cone.
-SpaceSegmentResult construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec, double lambda,
-                                              double nu, bool mirror = false, const SpaceSegmentOptions& options = {});
-SpaceSegmentResult construct_compound_space_segment(const SpaceEndpoints& ends, const CompoundSpaceSpec& spec,
-                                                    double lambda0, double nu0, bool mirror = false,
-                                                    const SpaceSegmentOptions& options = {});
+/// The construction at given (Λ0, ν0) without solving (v1 only enters the end-tangent residual):
+/// the curve that meets P0, v0, P1 for these unknowns, status ok or tolerance_not_met by its
+/// end-tangent error. Without a curve: no_solution when these unknowns give none (the curve ends
+/// before the cone, no positive ν1 continues the torsion law at the joint), max_iterations when a
+/// cap of the options (max_turning, max_torsion_turning, max_length) or the integrator's step cap
+/// ends it first, numerical_failure when its laws are not representable in double precision.
+Result<SpaceCurve, SpaceInfo> construct_g1_space_segment(const SpaceEndpoints& ends, const G1SpaceSpec& spec,
+                                                         double lambda, double nu, bool mirror = false,
+                                                         const SpaceSegmentOptions& options = {});
+Result<SpaceCurve, SpaceInfo> construct_compound_space_segment(const SpaceEndpoints& ends,
+                                                               const CompoundSpaceSpec& spec, double lambda0,
+                                                               double nu0, bool mirror = false,
+                                                               const SpaceSegmentOptions& options = {});
 
-/// Endpoint data for which a curve exists by construction: P0 = 0, v0 = e_x, P1 = (cos θ, sin θ, 0)
-/// and v1 = the end tangent of the construction at (Λ0, ν0), θ ∈ (0, π) the cone half-angle.
-/// Status of the construction in `status` (no_solution: these unknowns never meet the cone).
-SpaceEndpoints drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0, double nu0,
-                                  double theta, Status* status, const SpaceSegmentOptions& options = {});
-
-/// n ≥ 2 points along a drawn segment (split over the pieces by length; each piece includes its
-/// ends). Status via `status` when an integration did not finish.
-std::vector<SpaceSample> space_segment_points(const SpaceSegmentResult& r, int n, Status* status = nullptr);
+/// The construction at (Λ0, ν0) (G1 uses alpha0, beta0, omega0, type) for endpoint data where a
+/// curve exists by construction: info.ends = P0 = 0, v0 = e_x, P1 = (cos θ, sin θ, 0), θ ∈ (0, π)
+/// the cone half-angle, and v1 = the construction's end tangent (status ok, end-tangent residual
+/// 0). When the construction fails: its status as construct_*, info.ends.v1 = e_x.
+Result<SpaceCurve, SpaceInfo> drawable_endpoints(const CompoundSpaceSpec& spec, bool compound, double lambda0,
+                                                 double nu0, double theta, const SpaceSegmentOptions& options = {});
 
 }  // namespace lac

@@ -7,13 +7,14 @@
 // results/space_rtheta.{md,csv} (Fig. 7 sweep) and results/space_figures_points.csv (curve
 // samples for experiments/figures/space_figures.py).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "io/table.hpp"
-#include "io/timing.hpp"
 #include "lac/constructions/space_segment.hpp"
 
 namespace {
@@ -50,11 +51,26 @@ std::string vec_text(const lac::Vec3& v) {
   return lac::io::fmt(v.x(), 4) + ", " + lac::io::fmt(v.y(), 4) + ", " + lac::io::fmt(v.z(), 4);
 }
 
-void write_points(std::ofstream& csv, const std::string& figure, double r_theta, const lac::SpaceSegmentResult& r) {
+// 240 samples split over the pieces by their share of the length, each piece sampled uniformly
+// in s from its start to its end (the joint appears once per piece).
+void write_points(std::ofstream& csv, const std::string& figure, double r_theta, const lac::SpaceCurve& c) {
+  constexpr int kPoints = 240;
   csv.precision(10);
-  for (const auto& p : lac::space_segment_points(r, 240))
-    csv << figure << ',' << r_theta << ',' << p.piece << ',' << p.s << ',' << p.p.x() << ',' << p.p.y() << ','
-        << p.p.z() << ',' << p.kappa << ',' << p.tau << '\n';
+  const auto& pieces = c.pieces();
+  double total = 0;
+  for (const auto& p : pieces) total += p.s_end - p.s_begin;
+  int left = kPoints;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const int later = 2 * static_cast<int>(pieces.size() - k - 1);  // at least 2 per later piece
+    const int m = k + 1 == pieces.size()
+                      ? left
+                      : std::clamp(static_cast<int>(std::lround(kPoints * (pieces[k].s_end - pieces[k].s_begin) / total)),
+                                   2, left - later);
+    left -= m;
+    for (const auto& p : c.sample(c.piece_start(k), c.piece_start(k + 1), m))
+      csv << figure << ',' << r_theta << ',' << k << ',' << p.s << ',' << p.p.x() << ',' << p.p.y() << ',' << p.p.z()
+          << ',' << p.kappa << ',' << p.tau << '\n';
+  }
 }
 
 }  // namespace
@@ -84,27 +100,26 @@ int main(int argc, char** argv) {
   for (const FigureSet& set : kSets) {
     bool drawn = false;
     for (const auto& trial : kTrials) {
-      lac::Status st;
-      const lac::SpaceEndpoints e = lac::drawable_endpoints(set.spec, true, trial[0], trial[1], trial[2], &st, opt);
-      if (st != lac::Status::ok) continue;
-      lac::io::Stopwatch clock;
-      const lac::SpaceSegmentResult r = lac::solve_compound_space_segment(e, set.spec, opt);
-      const double ms = 1e3 * clock.seconds();
-      if (r.status != lac::Status::ok) continue;
+      const auto drawable = lac::drawable_endpoints(set.spec, true, trial[0], trial[1], trial[2], opt);
+      if (drawable.summary.status != lac::Status::ok) continue;
+      const lac::SpaceEndpoints& e = drawable.info.ends;
+      const auto r = lac::solve_compound_space_segment(e, set.spec, opt);
+      if (r.summary.status != lac::Status::ok) continue;
       drawn = true;
-      const auto& p0 = r.pieces[0];
-      const auto& p1 = r.pieces[1];
-      const double share = r.scale * (p0.s_end - p0.s_begin) / r.length;
+      const lac::SpaceCurve& c = r.curve;
+      const lac::SpacePiece& p0 = c.pieces()[0];
+      const lac::SpacePiece& p1 = c.pieces()[1];
+      const double share = c.placement().scale * (p0.s_end - p0.s_begin) / c.length();
       t.add_row({set.name, set.spec.type == lac::TorsionType::type1 ? "1" : "2",
                  lac::io::fmt(set.spec.alpha0) + ", " + lac::io::fmt(set.spec.alpha1),
                  lac::io::fmt(set.spec.beta0) + ", " + lac::io::fmt(set.spec.beta1), lac::io::fmt(set.spec.omega0),
                  lac::io::fmt(set.spec.r_theta), lac::io::fmt(trial[2]), vec_text(e.v1),
-                 std::string(lac::to_string(r.status)) + (r.torsion_sign < 0 ? " (mirrored)" : ""),
-                 lac::io::fmt(p0.lambda, 4), lac::io::fmt(p0.nu, 4), lac::io::fmt(p1.lambda, 4),
-                 lac::io::fmt(p1.omega, 4), lac::io::fmt(p1.nu, 4), lac::io::fmt(p1.s_begin, 4),
-                 lac::io::fmt(r.length, 4), lac::io::fmt(share, 3), lac::io::sci(r.tangent_error, 2),
-                 std::to_string(r.evaluations), lac::io::fmt(ms, 3)});
-      write_points(pts, set.name, set.spec.r_theta, r);
+                 std::string(lac::to_string(r.summary.status)) + (r.info.torsion_sign < 0 ? " (mirrored)" : ""),
+                 lac::io::fmt(p0.law.lambda(), 4), lac::io::fmt(p0.law.nu(), 4), lac::io::fmt(p1.law.lambda(), 4),
+                 lac::io::fmt(p1.law.omega(), 4), lac::io::fmt(p1.law.nu(), 4), lac::io::fmt(p1.s_begin, 4),
+                 lac::io::fmt(c.length(), 4), lac::io::fmt(share, 3), lac::io::sci(*r.summary.residuals.angle, 2),
+                 std::to_string(r.summary.constructions), lac::io::fmt(1e3 * r.summary.seconds, 3)});
+      write_points(pts, set.name, set.spec.r_theta, c);
       if (std::string(set.name) == "5a") {
         sweep_ends = e;
         sweep_ok = true;
@@ -142,17 +157,20 @@ int main(int argc, char** argv) {
     for (double r_theta : {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9}) {
       lac::CompoundSpaceSpec sp = base.spec;
       sp.r_theta = r_theta;
-      const lac::SpaceSegmentResult r = lac::solve_compound_space_segment(sweep_ends, sp, opt);
-      if (r.status != lac::Status::ok) {
-        s.add_row({lac::io::fmt(r_theta), std::string(lac::to_string(r.status)), "", "", "", "", "", "",
-                   std::to_string(r.evaluations)});
+      const auto r = lac::solve_compound_space_segment(sweep_ends, sp, opt);
+      if (r.summary.status != lac::Status::ok) {
+        s.add_row({lac::io::fmt(r_theta), std::string(lac::to_string(r.summary.status)), "", "", "", "", "", "",
+                   std::to_string(r.summary.constructions)});
         continue;
       }
-      const auto& p0 = r.pieces[0];
-      s.add_row({lac::io::fmt(r_theta), std::string(lac::to_string(r.status)), lac::io::fmt(p0.lambda, 4),
-                 lac::io::fmt(p0.nu, 4), vec_text(r.joint), lac::io::fmt(r.scale * (p0.s_end - p0.s_begin) / r.length, 3),
-                 lac::io::fmt(r.length, 4), lac::io::sci(r.tangent_error, 2), std::to_string(r.evaluations)});
-      write_points(pts, "7", r_theta, r);
+      const lac::SpaceCurve& c = r.curve;
+      const lac::SpacePiece& p0 = c.pieces()[0];
+      s.add_row({lac::io::fmt(r_theta), std::string(lac::to_string(r.summary.status)), lac::io::fmt(p0.law.lambda(), 4),
+                 lac::io::fmt(p0.law.nu(), 4), vec_text(*r.info.joint),
+                 lac::io::fmt(c.placement().scale * (p0.s_end - p0.s_begin) / c.length(), 3),
+                 lac::io::fmt(c.length(), 4), lac::io::sci(*r.summary.residuals.angle, 2),
+                 std::to_string(r.summary.constructions)});
+      write_points(pts, "7", r_theta, c);
     }
   }
   lac::io::ResultDoc sdoc;

@@ -83,23 +83,23 @@ int main(int argc, char** argv) {
     for (const Config& cfg : configs) {
       lac::SpaceSegmentOptions o;
       o.solver = cfg.solver;
-      o.frenet.method = cfg.integrator;
-      if (cfg.integrator == lac::OdeMethod::rk45) o.frenet.rtol = 1e-12, o.frenet.atol = 1e-13;
+      o.integrator.method = cfg.integrator;
+      if (cfg.integrator == lac::OdeMethod::rk45) o.integrator.rtol = 1e-12, o.integrator.atol = 1e-13;
       std::vector<double> ms, cpu_ms, constructions, iterations;
       int success = 0;
       double worst = 0;
       for (const auto& c : cases) {
         const double cpu0 = thread_cpu_seconds();
         lac::io::Stopwatch clock;
-        const lac::SpaceSegmentResult r = compound ? lac::solve_compound_space_segment(c.ends, c.spec, o)
-                                                   : lac::solve_g1_space_segment(c.ends, c.g1(), o);
+        const auto r = compound ? lac::solve_compound_space_segment(c.ends, c.spec, o)
+                                : lac::solve_g1_space_segment(c.ends, c.g1(), o);
         ms.push_back(1e3 * clock.seconds());
         cpu_ms.push_back(1e3 * (thread_cpu_seconds() - cpu0));
-        constructions.push_back(static_cast<double>(r.evaluations));
-        iterations.push_back(r.iterations);
-        if (r.status == lac::Status::ok) {
+        constructions.push_back(static_cast<double>(r.summary.constructions));
+        iterations.push_back(r.summary.iterations);
+        if (r.summary.status == lac::Status::ok) {
           ++success;
-          worst = std::max(worst, r.tangent_error);
+          worst = std::max(worst, *r.summary.residuals.angle);
         }
         progress.tick(++done);
       }
@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
       "gives no success rate, tolerance or configuration set, so the ratio compares different machines (ours is "
       "newer and faster per core) and possibly different tolerances: it is context, not a like-for-like speedup. "
       "Failures (if any) are configurations where every solver run from the start and from the screened grid "
-      "stopped short of the tolerance; see docs/space_curves.md.";
+      "stopped short of the tolerance: status not_converged (or the closest run's max_iterations), since that "
+      "search is not complete and a curve may still exist; see docs/space_curves.md.";
   lac::io::write_result_table(out, "space_solvers", doc, t);
   std::cout << t.markdown();
   return 0;

@@ -32,19 +32,20 @@ void check_frenet(const std::string& what, const FrenetResult& r) {
   require_finite_result(what + " s", r.s);
 }
 
-void check_segment(const std::string& what, const SpaceSegmentResult& r) {
-  if (!usable(r.status)) return;
-  require_finite_result(what + " length", r.length);
-  require_finite_result(what + " scale", r.scale);
-  require_finite_result(what + " tangent_error", r.tangent_error);
-  require_finite_result(what + " position_error", r.position_error);
-  check_vec(what + " end_tangent", r.end_tangent);
-  check_vec(what + " joint", r.joint);
-  check_vec(what + " origin", r.origin);
-  for (const auto& p : r.pieces) {
-    require_finite_result(what + " lambda", p.lambda);
-    require_finite_result(what + " omega", p.omega);
-    require_finite_result(what + " nu", p.nu);
+void check_segment(const std::string& what, const Result<SpaceCurve, SpaceInfo>& r) {
+  if (!r.usable()) return;
+  const SpaceCurve& c = r.curve;
+  require_finite_result(what + " length", c.length());
+  require_finite_result(what + " scale", c.placement().scale);
+  require_finite_result(what + " tangent_error", r.summary.residuals.angle.value_or(NAN));
+  require_finite_result(what + " position_error", r.summary.residuals.position.value_or(NAN));
+  check_vec(what + " end_tangent", r.info.end_tangent);
+  if (r.info.joint) check_vec(what + " joint", *r.info.joint);
+  check_vec(what + " origin", c.placement().origin);
+  for (const SpacePiece& p : c.pieces()) {
+    require_finite_result(what + " lambda", p.law.lambda());
+    require_finite_result(what + " omega", p.law.omega());
+    require_finite_result(what + " nu", p.law.nu());
     require_finite_result(what + " s_end", p.s_end);
   }
 }
@@ -66,13 +67,13 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   SpaceSegmentOptions o;
   // The byte's choice as before OdeMethod was reordered (rk4 first), so stored inputs keep their method.
   constexpr OdeMethod kMethods[] = {OdeMethod::rk45, OdeMethod::rk4, OdeMethod::magnus6};
-  o.frenet.method = kMethods[in.byte() % 3];
+  o.integrator.method = kMethods[in.byte() % 3];
   // A twentieth of the default step cap: every call integrates the 12-dimensional Frenet system,
   // and at 20000 steps the 10^6-execution campaign ran at ~110 executions/s.
-  o.frenet.max_steps = 1'000;
+  o.integrator.max_steps = 1'000;
   const std::string spec_text = "alpha " + show(spec.alpha0) + " beta " + show(spec.beta0) + " omega " +
                                 show(spec.omega0) + " type " + std::to_string(static_cast<int>(spec.type)) +
-                                " method " + std::string(to_string(o.frenet.method));
+                                " method " + std::string(to_string(o.integrator.method));
 
   switch (mode % 4) {
     case 0: {  // the curve and its Frenet integration
@@ -91,9 +92,9 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
       guarded(at + " s_at_turning", [&] { require_not_nan("s_at_turning", c->s_at_turning(s0)); });
       guarded(at + " s_at_log_rho", [&] { require_not_nan("s_at_log_rho", c->s_at_log_rho(s0)); });
       guarded(at + " integrate_frenet to " + show(s1),
-              [&] { check_frenet("integrate_frenet", integrate_frenet(*c, Frame3{}, s0, s1, o.frenet)); });
+              [&] { check_frenet("integrate_frenet", integrate_frenet(*c, Frame3{}, s0, s1, o.integrator)); });
       guarded(at + " integrate_to_cone " + show(s1) + " cone " + show(cone),
-              [&] { check_frenet("integrate_to_cone", integrate_to_cone(*c, Frame3{}, s0, s1, cone, o.frenet)); });
+              [&] { check_frenet("integrate_to_cone", integrate_to_cone(*c, Frame3{}, s0, s1, cone, o.integrator)); });
       break;
     }
     case 1: {  // joint continuation
@@ -139,23 +140,23 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
       o.max_evaluations = in.int_in(5, 120);
       o.max_ode_evaluations = 10'000;  // ≤ ~0.05 s under the sanitizers with the last construction's overshoot
       o.allow_mirror = mirror;
-      SpaceSegmentResult r;
+      Result<SpaceCurve, SpaceInfo> r;
       if (!guarded(what + " solve " + std::string(to_string(o.solver)), [&] {
             r = compound ? solve_compound_space_segment(ends, spec, o) : solve_g1_space_segment(ends, g1, o);
           }))
         return 0;
       check_segment("solve", r);
-      if (usable(r.status)) {
+      if (r.usable()) {
         const int n = in.int_in(-1, 40);
-        guarded(what + " space_segment_points " + std::to_string(n), [&] {
-          Status st = Status::ok;
-          const auto pts = space_segment_points(r, n, &st);
-          if (usable(st))
-            for (const auto& q : pts) {
-              check_vec("sample p", q.p);
-              require_finite_result("sample kappa", q.kappa);
-              require_finite_result("sample tau", q.tau);
-            }
+        guarded(what + " SpaceCurve::sample " + std::to_string(n), [&] {
+          for (const SpacePoint& q : r.curve.sample(n)) {
+            check_vec("sample p", q.p);  // a flagged point holds a known point's frame
+            check_vec("sample t", q.t);
+            require_not_nan("sample dkappa_ds", q.dkappa_ds);  // may overflow at extreme scales
+            if (q.status != Status::ok) continue;
+            require_finite_result("sample kappa", q.kappa);
+            require_finite_result("sample tau", q.tau);
+          }
         });
       }
       break;

@@ -45,6 +45,8 @@ class LaSpaceCurve {
   double mu(double s) const { return std::exp(log_mu(s)); }
   double kappa(double s) const { return std::exp(-log_rho(s)); }
   double tau(double s) const { return std::exp(-log_mu(s)); }
+  /// dκ/ds = −Λ ρ^(−1−α), since dρ/ds = Λ ρ^(1−α) (000 Eqs. (1), (3)).
+  double dkappa_ds(double s) const { return -lambda() * std::exp(-(1.0 + alpha()) * log_rho(s)); }
 
   /// Total turning ∫₀^s κ du of the tangent (the planar θ(s) of MATH.md §1), s in s_range().
   /// InputError naming "s" where the value is not a finite double (extreme laws, e.g. Λ near

@@ -1,4 +1,5 @@
-// `lac space` end to end: JSON keys, points on request, CSV, and exit status 2 naming the parameter.
+// `lac space` end to end: JSON keys, points on request, CSV, every integrator and solver by name, and
+// exit status 2 naming the parameter.
 // Needs the `lac` executable built in the same build folder.
 #include <gtest/gtest.h>
 
@@ -47,6 +48,44 @@ TEST(CliSpace, G1WithEachSolverAndCsv) {
   const auto c = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --format csv");
   ASSERT_EQ(c.status, 0) << c.out;
   EXPECT_EQ(c.out.rfind("status,length,tangent_error,iterations,evaluations,seconds,segments\n", 0), 0u) << c.out;
+}
+
+TEST(CliSpace, EveryIntegratorByNameAndUniformPoints) {
+  for (const char* integrator : {"magnus6", "rk45", "rk4"}) {
+    const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --points 5 "
+                           "--integrator " + integrator);
+    ASSERT_EQ(r.status, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["integrator"], integrator);
+    EXPECT_EQ(j["status"], "ok") << j["message"];
+    const double length = j["length"].get<double>();
+    ASSERT_EQ(j["points"].size(), 5u);
+    for (size_t k = 0; k < 5; ++k) EXPECT_NEAR(j["points"][k]["s"].get<double>(), length * k / 4, 1e-14 * length);
+    EXPECT_EQ(j["points"][0]["segment"], 0);
+    EXPECT_EQ(j["points"][4]["segment"], 1);
+  }
+  auto r = run_lac("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --integrator euler");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("integrator"), std::string::npos) << r.out;
+}
+
+TEST(CliSpace, EveryIntegratorWithEverySolver) {
+  for (const char* integrator : {"magnus6", "rk45", "rk4"})
+    for (const char* solver : {"newton", "ceres", "simplex"}) {
+      const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --points 3 " +
+                             "--integrator " + integrator + " --solver " + solver);
+      ASSERT_EQ(r.status, 0) << integrator << " " << solver << ": " << r.out;
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["integrator"], integrator);
+      EXPECT_EQ(j["solver"], solver);
+      EXPECT_EQ(j["status"], "ok") << integrator << " " << solver << ": " << j["message"];
+      EXPECT_LE(j["tangent_error"].get<double>(), 1e-10);
+      ASSERT_EQ(j["points"].size(), 3u);
+      const auto& last = j["points"].back();
+      EXPECT_NEAR(last["x"].get<double>(), 0.36235775447667362, 1e-12) << integrator << " " << solver;
+      EXPECT_NEAR(last["y"].get<double>(), 0.93203908596722629, 1e-12) << integrator << " " << solver;
+      EXPECT_NEAR(last["z"].get<double>(), 0.0, 1e-12) << integrator << " " << solver;
+    }
 }
 
 TEST(CliSpace, BadInputExitsWithStatus2NamingTheParameter) {

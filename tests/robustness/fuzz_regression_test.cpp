@@ -245,13 +245,13 @@ TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
   const lac::G1SpaceSpec spec{1.000000000000001, 1e300, 0.0, lac::TorsionType::type2};
   lac::SpaceSegmentOptions o;
   o.solver = lac::NonlinearMethod::newton;
-  o.frenet.method = lac::OdeMethod::rk4;
-  const lac::SpaceSegmentResult r = lac::solve_g1_space_segment(ends, spec, o);
-  EXPECT_EQ(r.status, lac::Status::max_iterations) << r.message;
-  EXPECT_NE(r.message.find("max_ode_evaluations"), std::string::npos) << r.message;
+  o.integrator.method = lac::OdeMethod::rk4;
+  const auto r = lac::solve_g1_space_segment(ends, spec, o);
+  EXPECT_EQ(r.summary.status, lac::Status::max_iterations) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("max_ode_evaluations"), std::string::npos) << r.summary.message;
   // At most one construction (two pieces of ≤ 20000 rk4 steps, 4 evaluations each, plus the
   // event location) beyond the budget.
-  EXPECT_LE(r.ode_evaluations, o.max_ode_evaluations + 200'000);
+  EXPECT_LE(r.summary.evaluations, o.max_ode_evaluations + 200'000);
   o.max_ode_evaluations = 0;
   EXPECT_THROW(lac::solve_g1_space_segment(ends, spec, o), lac::InputError);
 }

@@ -168,13 +168,15 @@ TEST(ParallelSweep, RandomSpaceSegmentsSameWithOneAndManyThreads) {
   }
   expect_same_with_1_and_n_threads(cases.size(), [&](size_t k) {
     const lac::DrawableCase& c = cases[k];
-    const lac::SpaceSegmentResult r = c.compound ? lac::solve_compound_space_segment(c.ends, c.spec)
-                                                 : lac::solve_g1_space_segment(c.ends, c.g1());
-    Fingerprint f{std::string(lac::to_string(r.status)), {}};
-    for (double v : {r.length, r.scale, r.tangent_error, r.position_error}) f.numbers.push_back(bits(v));
-    for (const auto& p : r.pieces) f.numbers.push_back(bits(p.lambda));
-    f.numbers.push_back(static_cast<uint64_t>(r.iterations));
-    f.numbers.push_back(static_cast<uint64_t>(r.evaluations));
+    const auto r = c.compound ? lac::solve_compound_space_segment(c.ends, c.spec)
+                              : lac::solve_g1_space_segment(c.ends, c.g1());
+    Fingerprint f{std::string(lac::to_string(r.summary.status)), {}};
+    for (double v : {r.curve.length(), r.curve.placement().scale, r.summary.residuals.angle.value_or(-1.0),
+                     r.summary.residuals.position.value_or(-1.0)})
+      f.numbers.push_back(bits(v));
+    for (const auto& p : r.curve.pieces()) f.numbers.push_back(bits(p.law.lambda()));
+    f.numbers.push_back(static_cast<uint64_t>(r.summary.iterations));
+    f.numbers.push_back(static_cast<uint64_t>(r.summary.constructions));
     return f;
   });
 }
