@@ -1,13 +1,17 @@
-// Similar-triangle search for monotonic- and compound-rhythm LA segments (001 §2–4,
-// MATH.md §2). See g1_segment.hpp for the conventions.
+// Similar-triangle search for monotonic- and compound-rhythm LA segments (001 §2–4). See
+// triangle_g1.hpp for the conventions.
 #include "lac/constructions/triangle_g1.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/curves/planar/standard_form.hpp"
 
 namespace lac {
 namespace {
@@ -37,7 +41,7 @@ struct Canonical {
 
 double cross(Point2 u, Point2 v) { return u.real() * v.imag() - u.imag() * v.real(); }
 
-Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const char* fn) {
+Canonical canonicalize(const ControlTriangle& t, const TriangleOptions& o, const char* fn) {
   const char* names[6] = {"a0.x", "a0.y", "a1.x", "a1.y", "a2.x", "a2.y"};
   const double v[6] = {t.a0.real(), t.a0.imag(), t.a1.real(), t.a1.imag(), t.a2.real(), t.a2.imag()};
   for (int k = 0; k < 6; ++k) require_finite(fn, names[k], v[k]);
@@ -83,50 +87,65 @@ Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const 
 }
 
 /// Everything the search varies for one Λ0: the standard-form curve of 001 Fig. 5.
+///
+/// Λ0 < 1/D keeps both segments inside their θ domains: segment 0 needs d0 Λ0 < 1 with
+/// d0 = (1−α0)θ0 (configuration a) or (α0−1)θ0 (b); segment 1, when α1 < 1, needs
+/// (1−α1)Λ1'θ1 < 1 with Λ1' = Λ0 ρc^(1−α0), i.e. (d0 + d1)Λ0 < 1 in configuration a
+/// (ρc^(α0−1) = 1 − (1−α0)Λ0θ0) and d1 Λ0 < 1 in b (ρc = 1), d1 = max(0, 1−α1)θ1. This is
+/// 001 §4's "search a smaller Λ0" rule in closed form.
 struct Problem {
   double alpha0, alpha1, theta0, theta1;
   bool configuration_b;
   double turning;  // θ0 + θ1
+  double d0, d1;   // the segments' terms of D
   double u_max;    // end of the search variable's range (1 = unbounded Λ0)
 
+  double d() const { return configuration_b ? std::max(d0, d1) : d0 + d1; }
   // u = w/(1+w), w = Λ0 θ: maps Λ0 ∈ (0, Λmax) onto (0, u_max) for every α0, including the
   // unbounded α0 = 1 (001: "the bisection method is extended").
   double lambda_of(double u) const { return u / (1.0 - u) / turning; }
 };
 
-/// Λ0 < 1/D keeps both segments inside their θ domains (MATH.md §1 table): segment 0 needs
-/// (1−α0)Λ0θ0 < 1 (configuration a) or (α0−1)Λ0θ0 < 1 (b); segment 1, when α1 < 1, needs
-/// (1−α1)Λ1'θ1 < 1 with Λ1' = Λ0 ρc^(1−α0), i.e. (1−α0)Λ0θ0 + (1−α1)Λ0θ1 < 1 in configuration
-/// a (ρc^(α0−1) = 1 − (1−α0)Λ0θ0) and (1−α1)Λ0θ1 < 1 in b (ρc = 1). This is 001 §4's
-/// "search a smaller Λ0" rule in closed form.
 Problem make_problem(double alpha0, double alpha1, double theta0, double theta1) {
-  Problem p{alpha0, alpha1, theta0, theta1, alpha0 > 1, theta0 + theta1, 1.0};
-  const double seg1 = theta1 > 0 ? std::max(0.0, 1.0 - alpha1) * theta1 : 0.0;
-  const double d = p.configuration_b ? std::max((alpha0 - 1.0) * theta0, seg1) : (1.0 - alpha0) * theta0 + seg1;
-  if (d > 0) {
+  const bool b = alpha0 > 1;
+  Problem p{alpha0, alpha1, theta0, theta1, b, theta0 + theta1, b ? (alpha0 - 1.0) * theta0 : (1.0 - alpha0) * theta0,
+            theta1 > 0 ? std::max(0.0, 1.0 - alpha1) * theta1 : 0.0, 1.0};
+  if (const double d = p.d(); d > 0) {
     const double w_max = p.turning / d;
     p.u_max = w_max / (1.0 + w_max);
   }
   return p;
 }
 
+/// A trial curve in standard form (001 Fig. 5). Segment 0 is LaCurve(α0, Λ0) over θ ∈ [0, θ0]
+/// (configuration a, α0 ≤ 1) or [−θ0, 0] (configuration b, α0 > 1). Segment 1 is drawn from the
+/// joint J in its own standard form scaled by ρc: LaCurve(α1, Λ0 ρc^(1−α0)) over [0, θ1]
+/// (equivalent to 001's θs … θs + θ1 on LaCurve(α1, Λ1), without the cancellation of
+/// C(θs + θ1) − C(θs)).
+struct StandardCurve {
+  double lambda0 = 0;
+  double log_rho_joint = 0;  ///< log ρc (0 in configuration b)
+  Point2 start{}, joint{}, end{};
+  double start_tangent = 0;  ///< θ at the start point
+};
+
 struct Trial {
   bool valid = false;  ///< false when the curve is not representable (overflow near a domain end)
   double phi = 0;      ///< angle at the start between its tangent and the chord
-  StandardForm form;
+  StandardCurve form;
   long evaluations = 0;
   Status status = Status::ok;
 };
 
+LaCurve segment1_curve(const Problem& p, const StandardCurve& f) {
+  // Λ1' = Λ0 ρc^(1−α0) = dρ/ds at the joint (001 Eq. (3.5) expressed at ρ = ρc).
+  return LaCurve(p.alpha1, f.lambda0 * std::exp((1.0 - p.alpha0) * f.log_rho_joint));
+}
+
 template <class M>
 Trial draw(const Problem& p, double lambda0, const M& method) {
   Trial t;
-  StandardForm& f = t.form;
-  f.alpha0 = p.alpha0;
-  f.alpha1 = p.alpha1;
-  f.theta0 = p.theta0;
-  f.theta1 = p.theta1;
-  f.configuration_b = p.configuration_b;
+  StandardCurve& f = t.form;
   f.lambda0 = lambda0;
   try {
     const LaCurve c0(p.alpha0, lambda0);
@@ -135,8 +154,6 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method);
       t.evaluations += r0.evaluations;
       t.status = r0.status;
-      f.start = 0;
-      f.start_tangent = 0;
       f.joint = r0.point.position;
       f.log_rho_joint = c0.log_rho_at_theta(p.theta0);
       joint_tangent = p.theta0;
@@ -146,19 +163,13 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       t.status = r0.status;
       f.start = r0.point.position;
       f.start_tangent = -p.theta0;
-      f.joint = 0;
-      f.log_rho_joint = 0;
     }
     f.end = f.joint;
     if (p.theta1 > 0) {
-      // Segment 1 in its own standard form at the joint, scaled by ρc: Λ1' = Λ0 ρc^(1−α0)
-      // = dρ/ds at the joint (001 Eq. (3.5) expressed at ρ = ρc).
-      const double rho_c = std::exp(f.log_rho_joint);
-      const LaCurve c1(p.alpha1, lambda0 * std::exp((1.0 - p.alpha0) * f.log_rho_joint));
-      const PositionResult r1 = position_at(c1, Parameter::theta, p.theta1, method);
+      const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method);
       t.evaluations += r1.evaluations;
       if (r1.status != Status::ok && t.status == Status::ok) t.status = r1.status;
-      f.end = f.joint + rho_c * std::polar(1.0, joint_tangent) * r1.point.position;
+      f.end = f.joint + std::exp(f.log_rho_joint) * std::polar(1.0, joint_tangent) * r1.point.position;
     }
     const Point2 chord = (f.end - f.start) * std::polar(1.0, -f.start_tangent);
     t.phi = std::atan2(chord.imag(), chord.real());
@@ -170,30 +181,43 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
   return t;
 }
 
-/// The first user-unit result of `g` that is not a finite double (nullptr if none). ρ at the
+/// The first user-unit value of a solution that is not a finite double (nullptr if none). ρ at the
 /// large-ρ end of the last piece may be +inf (the curve ends straight: κ underflows to 0).
-const char* unrepresentable(const G1Segment& g) {
+const char* unrepresentable(const TriangleInfo& info, const Similarity& to_user) {
   auto finite = [](Point2 z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
-  if (!std::isfinite(g.length)) return "length";
-  if (!std::isfinite(g.kappa0) || !std::isfinite(g.kappa1)) return "end curvature";
-  if (!finite(g.form.scale_rotation) || !finite(g.form.offset)) return "similarity onto the control points";
-  if (g.compound && (!finite(g.joint) || !std::isfinite(g.rho_joint) || !(g.rho_joint > 0))) return "joint";
-  for (size_t i = 0; i < g.pieces.size(); ++i) {
-    const SegmentPiece& p = g.pieces[i];
+  if (!finite(to_user.factor) || !finite(to_user.offset)) return "similarity onto the control points";
+  if (info.compound && (!finite(info.joint) || !std::isfinite(info.rho_joint) || !(info.rho_joint > 0))) return "joint";
+  for (size_t i = 0; i < info.pieces.size(); ++i) {
+    const TrianglePiece& p = info.pieces[i];
     if (!std::isfinite(p.lambda_user)) return "lambda_user";
-    if (!std::isfinite(p.length)) return "piece length";
     if (!std::isfinite(p.rho_small) || !(p.rho_small > 0)) return "rho_small";
-    const bool last = i + 1 == g.pieces.size();
+    const bool last = i + 1 == info.pieces.size();
     if (std::isnan(p.rho_large) || !(p.rho_large > 0) || (!last && std::isinf(p.rho_large))) return "rho_large";
   }
   return nullptr;
 }
 
+/// The solved standard-form curve placed on the control points, from a0 to a2 (001 §2: p0 → b0,
+/// end → b2; reversed when the triangle was swapped). InputError when a piece has no segment
+/// representation in double precision.
+PlanarCurve place(const Problem& p, const StandardCurve& f, const Similarity& to_user, const Canonical& c,
+                  const ControlTriangle& tri) {
+  const bool b = p.configuration_b;
+  std::vector<LaSegment> segments;
+  segments.push_back(to_segment({LaCurve(p.alpha0, f.lambda0), Parameter::theta, b ? -p.theta0 : 0.0, b ? 0.0 : p.theta0, to_user},
+                                b ? f.start : Point2{}));
+  if (p.theta1 > 0) {
+    const Similarity at_joint{std::exp(f.log_rho_joint) * std::polar(1.0, b ? 0.0 : p.theta0), f.joint, false};
+    segments.push_back(to_segment({segment1_curve(p, f), Parameter::theta, 0.0, p.theta1, to_user.after(at_joint)}));
+  }
+  PlanarCurve curve(std::move(segments));
+  return c.swapped ? curve.reversed(tri.a0) : curve;
+}
+
 template <class M>
-G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
-                const SegmentOptions& o, const M& method, const char* fn) {
+TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
+                     const TriangleOptions& o, const M& method, const char* fn) {
   o.validate();
-  method.validate();
   require_finite(fn, compound ? "alpha0" : "alpha", alpha0);
   if (compound) {
     require_finite(fn, "alpha1", alpha1);
@@ -204,10 +228,14 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   const double theta1 = compound ? c.turning - theta0 : 0.0;
   const Problem p = make_problem(alpha0, alpha1, theta0, theta1);
 
-  G1Segment g;
-  g.compound = compound;
-  g.turning = c.sign * c.turning;
-  g.segment0_at_a0 = !c.swapped;
+  TriangleResult g;
+  Summary& sum = g.summary;
+  TriangleInfo& info = g.info;
+  sum.integrator = std::string(M::name);
+  sum.solver = std::string(to_string(o.solver));
+  info.compound = compound;
+  info.turning = c.sign * c.turning;
+  info.segment0_at_a0 = !c.swapped;
 
   // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
   // The trial with the smallest |f| is kept: the root finders return that point, so the
@@ -216,8 +244,8 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   double best_u = -1, best_f = std::numeric_limits<double>::infinity();
   auto mismatch = [&](double u) {
     Trial t = draw(p, p.lambda_of(u), method);
-    ++g.trials;
-    g.evaluations += t.evaluations;
+    ++sum.constructions;
+    sum.evaluations += t.evaluations;
     if (!t.valid) return std::numeric_limits<double>::quiet_NaN();
     const double f = t.phi - c.target;
     if (std::abs(f) < best_f) {
@@ -237,7 +265,7 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
     for (int k = 0; k < o.max_bracket_probes; ++k, delta *= 0.1) {
       const double u = p.u_max * (1.0 - delta);
       const double fu = mismatch(u);
-      ++g.bracket_probes;
+      ++info.bracket_probes;
       if (!std::isfinite(fu)) break;  // not representable any closer to the end of the range
       if (fu >= 0) {
         b.hi = u;
@@ -249,27 +277,26 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
       b.f_lo = fu;
     }
     if (!found) {
-      g.status = Status::no_solution;
-      g.message = std::string(fn) + ": outside the drawable region (or closer to the end of the Lambda0 range than double " +
-                  "precision resolves): the start angle of the trial curves stays below the control triangle's (" +
-                  format_number(c.target) + " rad) up to Lambda0 = " +
-                  format_number(p.lambda_of(b.lo)) + " (range (0, " +
-                  (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + "))";
+      sum.status = Status::no_solution;
+      sum.message = std::string(fn) + ": outside the drawable region (or closer to the end of the Lambda0 range than double " +
+                    "precision resolves): the start angle of the trial curves stays below the control triangle's (" +
+                    format_number(c.target) + " rad) up to Lambda0 = " + format_number(p.lambda_of(b.lo)) + " (range (0, " +
+                    (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + "))";
       return g;
     }
     const RootResult root = find_root(o.solver, mismatch, b, o.root);
-    g.iterations = root.iterations;
-    g.residual = root.residual;
+    sum.iterations = root.iterations;
+    info.residual = root.residual;
     if (!usable(root.status) || !std::isfinite(root.root)) {
-      g.status = root.status == Status::ok ? Status::numerical_failure : root.status;
-      g.message = std::string(fn) + ": " + root.message;
+      sum.status = root.status == Status::ok ? Status::numerical_failure : root.status;
+      sum.message = std::string(fn) + ": " + root.message;
       return g;
     }
-    g.status = root.status;
-    g.message = root.message;
+    sum.status = root.status;
+    sum.message = root.message;
     u_root = root.root;
   } else {
-    g.residual = f0;
+    info.residual = f0;
   }
 
   Trial t;
@@ -277,188 +304,111 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
     t = std::move(best);
   } else {
     t = draw(p, p.lambda_of(u_root), method);
-    ++g.trials;
-    g.evaluations += t.evaluations;
+    ++sum.constructions;
+    sum.evaluations += t.evaluations;
   }
   if (!t.valid) {
-    g.status = Status::numerical_failure;
-    g.message = std::string(fn) + ": the solution curve is not representable in double precision";
+    sum.status = Status::numerical_failure;
+    sum.message = std::string(fn) + ": the solution curve is not representable in double precision";
     return g;
   }
-  if (t.status != Status::ok && g.status == Status::ok) {
-    g.status = Status::tolerance_not_met;
-    g.message = std::string(fn) + ": position quadrature did not meet its tolerance";
+  if (t.status != Status::ok && sum.status == Status::ok) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": position quadrature did not meet its tolerance";
   }
 
   // Similarity onto the canonical triangle (001 §2: p0 → b0, end → b2).
-  StandardForm& f = t.form;
-  f.mirrored = c.mirrored;
-  f.swapped = c.swapped;
+  const StandardCurve& f = t.form;
   auto m = [&](Point2 z) { return c.mirrored ? std::conj(z) : z; };
   const Point2 a_scaled = c.chord / (m(f.end) - m(f.start));  // onto the triangle divided by its scale
-  f.scale_rotation = c.scale * a_scaled;
-  f.offset = c.origin - f.scale_rotation * m(f.start);
-  const double k = std::abs(f.scale_rotation);
+  Similarity to_user{c.scale * a_scaled, {}, c.mirrored};
+  to_user.offset = c.origin - to_user.factor * m(f.start);
+  const double k = std::abs(to_user.factor);
 
   const LaCurve c0(alpha0, f.lambda0);
   const double rho_c = std::exp(f.log_rho_joint);
-  SegmentPiece s0;
+  TrianglePiece s0;
   s0.alpha = alpha0;
   s0.lambda = f.lambda0;
   s0.lambda_user = f.lambda0 * std::pow(k, alpha0 - 1.0);
   s0.turning = theta0;
-  s0.length = k * (f.configuration_b ? -c0.s_at_theta(-theta0) : c0.s_at_theta(theta0));
-  s0.rho_small = k * (f.configuration_b ? c0.rho_at_theta(-theta0) : 1.0);
+  s0.rho_small = k * (p.configuration_b ? c0.rho_at_theta(-theta0) : 1.0);
   s0.rho_large = k * rho_c;
-  g.pieces.push_back(s0);
-  double rho_end = rho_c;
+  info.pieces.push_back(s0);
   if (compound) {
-    const LaCurve c1(alpha1, f.lambda0 * std::exp((1.0 - alpha0) * f.log_rho_joint));
-    SegmentPiece s1;
+    const LaCurve c1 = segment1_curve(p, f);
+    TrianglePiece s1;
     s1.alpha = alpha1;
     s1.lambda = f.lambda0 * std::exp((alpha1 - alpha0) * f.log_rho_joint);  // 001 Eq. (3.5)
     s1.lambda_user = s1.lambda * std::pow(k, alpha1 - 1.0);
     s1.turning = theta1;
-    s1.length = k * rho_c * c1.s_at_theta(theta1);
     s1.rho_small = k * rho_c;
-    rho_end = rho_c * c1.rho_at_theta(theta1);
-    s1.rho_large = k * rho_end;
-    g.pieces.push_back(s1);
-    g.joint = f.scale_rotation * m(f.joint) + f.offset;
-    g.rho_joint = k * rho_c;
+    s1.rho_large = k * (rho_c * c1.rho_at_theta(theta1));
+    info.pieces.push_back(s1);
+    info.joint = to_user(f.joint);
+    info.rho_joint = k * rho_c;
   }
-  for (const auto& piece : g.pieces) g.length += piece.length;
-  const double kappa_b0 = c.sign / g.pieces.front().rho_small;  // the curve turns one way throughout
-  const double kappa_b2 = c.sign / (k * rho_end);
-  g.kappa0 = c.swapped ? kappa_b2 : kappa_b0;
-  g.kappa1 = c.swapped ? kappa_b0 : kappa_b2;
 
   // Tangent check in user coordinates: mapped end tangents against the control legs.
   auto mapped_direction = [&](double theta) { return a_scaled * m(std::polar(1.0, theta)); };
-  const double end_tangent = f.configuration_b ? theta1 : theta0 + theta1;
+  const double end_tangent = p.configuration_b ? theta1 : theta0 + theta1;
   const double e0 = std::abs(std::arg(mapped_direction(f.start_tangent) / c.leg0));
   const double e1 = std::abs(std::arg(mapped_direction(end_tangent) / c.leg1));
-  g.tangent_error = std::max(e0, e1);
-  if (!(g.tangent_error <= o.tangent_tolerance) && usable(g.status)) {
-    g.status = Status::tolerance_not_met;
-    g.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(g.tangent_error) + " rad";
+  sum.residuals.angle = std::max(e0, e1);
+  if (!(*sum.residuals.angle <= o.tangent_tolerance) && usable(sum.status)) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(*sum.residuals.angle) + " rad";
   }
-  g.form = f;
+  if (!usable(sum.status)) return g;
   // The standard-form solution is finite; its user-unit image may not be (Λ_user = Λ k^(α−1),
   // ρ = k ρ_std and κ = 1/ρ over- or underflow for extreme α or scale). Such a curve exists
   // but has no double-precision description: report it instead of returning inf.
-  if (usable(g.status)) {
-    const char* bad = unrepresentable(g);
-    if (bad) {
-      g.status = Status::numerical_failure;
-      g.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
-                  " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")";
+  const char* bad = unrepresentable(info, to_user);
+  std::string why;
+  if (!bad) {
+    try {
+      g.curve = place(p, f, to_user, c, tri);
+      if (!std::isfinite(g.curve.kappa_at(0)) || !std::isfinite(g.curve.kappa_at(g.curve.length()))) bad = "end curvature";
+    } catch (const InputError& e) {
+      bad = "segment";
+      why = std::string(": ") + e.what();
     }
+  }
+  if (bad) {
+    g.curve = PlanarCurve();
+    sum.status = Status::numerical_failure;
+    sum.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
+                  " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")" + why;
   }
   return g;
 }
 
-template <class M>
-std::vector<SegmentSample> sample(const G1Segment& g, int n, const M& method) {
-  if (!usable(g.status) || g.pieces.empty()) throw_input_error("sample_segment", "segment", "has no usable curve (status " + std::string(to_string(g.status)) + ")");
-  if (n < 2) throw_input_error("sample_segment", "n", n, "[2, inf)");
-  const StandardForm& f = g.form;
-  const double k = std::abs(f.scale_rotation);
-  const double rho_c = std::exp(f.log_rho_joint);
-  auto m = [&](Point2 z) { return f.mirrored ? std::conj(z) : z; };
-  const double rot = std::arg(f.scale_rotation);
-  const double orientation = f.mirrored ? -1.0 : 1.0;
-  const double sign = g.turning > 0 ? 1.0 : -1.0;
-
-  std::vector<SegmentSample> out;  // canonical order b0 → b2, s from b0
-  const int pieces = static_cast<int>(g.pieces.size());
-  int n0 = n;
-  if (pieces == 2) n0 = std::clamp(static_cast<int>(std::lround(n * g.pieces[0].length / g.length)), 2, std::max(2, n - 1));
-  const int n1 = pieces == 2 ? std::max(2, n - n0 + 1) : 0;
-
-  const LaCurve c0(f.alpha0, f.lambda0);
-  const double s_a = f.configuration_b ? c0.s_at_theta(-f.theta0) : 0.0;
-  const double s_b = f.configuration_b ? 0.0 : c0.s_at_theta(f.theta0);
-  // Uniform in s; when an end lies at the edge of the s domain in double precision (ρ → 0 at
-  // the start of configuration b, ρ → ∞ at an inflection), uniform in θ instead.
-  auto piece_points = [&](const LaCurve& curve, double s_lo, double s_hi, double th_lo, double th_hi, int count) {
-    try {
-      return polyline(curve, Parameter::s, s_lo, s_hi, count, method);
-    } catch (const InputError&) {
-      return polyline(curve, Parameter::theta, th_lo, th_hi, count, method);
-    }
-  };
-  const double th_a = f.configuration_b ? -f.theta0 : 0.0, th_b = f.configuration_b ? 0.0 : f.theta0;
-  for (const auto& r : piece_points(c0, s_a, s_b, th_a, th_b, n0)) {
-    SegmentSample q;
-    q.position = f.scale_rotation * m(r.point.position) + f.offset;
-    q.s = k * (r.point.s - s_a);
-    q.theta = rot + orientation * r.point.theta;
-    q.kappa = sign / (k * r.point.rho);
-    q.piece = 0;
-    out.push_back(q);
-  }
-  if (pieces == 2) {
-    const LaCurve c1(f.alpha1, f.lambda0 * std::exp((1.0 - f.alpha0) * f.log_rho_joint));
-    const double joint_tangent = f.configuration_b ? 0.0 : f.theta0;
-    const double s_joint = out.back().s;
-    const Point2 turn = rho_c * std::polar(1.0, joint_tangent);
-    const auto pts = piece_points(c1, 0.0, c1.s_at_theta(f.theta1), 0.0, f.theta1, n1);
-    for (size_t j = 1; j < pts.size(); ++j) {
-      const auto& r = pts[j];
-      SegmentSample q;
-      q.position = f.scale_rotation * m(f.joint + turn * r.point.position) + f.offset;
-      q.s = s_joint + k * rho_c * r.point.s;
-      q.theta = rot + orientation * (joint_tangent + r.point.theta);
-      q.kappa = sign / (k * rho_c * r.point.rho);
-      q.piece = 1;
-      out.push_back(q);
-    }
-  }
-  if (f.swapped) {  // user order a0 → a2 is the reverse of b0 → b2
-    std::reverse(out.begin(), out.end());
-    const double total = out.front().s;
-    for (auto& q : out) {
-      q.s = total - q.s;
-      q.theta += kPi;
-    }
-  }
-  return out;
+/// Runs the construction with the options' integrator and records the wall time of the call.
+template <class Run>
+TriangleResult timed(const TriangleOptions& o, Run run) {
+  const auto start = std::chrono::steady_clock::now();
+  TriangleResult g = std::visit(run, o.integrator);
+  g.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return g;
 }
 
 }  // namespace
 
-GkTanhSinh default_segment_integrator() { return GkTanhSinh{}; }
-
-void SegmentOptions::validate() const {
+void TriangleOptions::validate() const {
+  std::visit([](const auto& m) { m.validate(); }, integrator);
   root.validate();
-  if (!(min_turning > 0 && min_turning < 0.1)) throw_input_error("SegmentOptions", "min_turning", min_turning, "(0, 0.1)");
+  if (!(min_turning > 0 && min_turning < 0.1)) throw_input_error("TriangleOptions", "min_turning", min_turning, "(0, 0.1)");
   if (max_bracket_probes < 1 || max_bracket_probes > 30)
-    throw_input_error("SegmentOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
-  if (!(tangent_tolerance > 0)) throw_input_error("SegmentOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
+    throw_input_error("TriangleOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
+  if (!(tangent_tolerance > 0)) throw_input_error("TriangleOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
 }
 
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o) {
-  return solve(t, alpha, alpha, 1.0, false, o, default_segment_integrator(), "solve_g1");
+TriangleResult solve_g1(const ControlTriangle& t, double alpha, const TriangleOptions& o) {
+  return timed(o, [&](const auto& m) { return solve(t, alpha, alpha, 1.0, false, o, m, "solve_g1"); });
 }
 
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return solve(t, alpha, alpha, 1.0, false, o, mm, "solve_g1"); }, method);
-}
-
-G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o) {
-  return solve(t, alpha0, alpha1, r, true, o, default_segment_integrator(), "solve_compound");
-}
-
-G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o,
-                         const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return solve(t, alpha0, alpha1, r, true, o, mm, "solve_compound"); }, method);
-}
-
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n) { return sample(g, n, default_segment_integrator()); }
-
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return sample(g, n, mm); }, method);
+TriangleResult solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const TriangleOptions& o) {
+  return timed(o, [&](const auto& m) { return solve(t, alpha0, alpha1, r, true, o, m, "solve_compound"); });
 }
 
 }  // namespace lac

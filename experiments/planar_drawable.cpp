@@ -68,11 +68,11 @@ Outcome solve_cell(const Cell& c, int grid) {
   const double h = std::sin(b0) * std::sin(b2) / std::sin(b0 + b2);  // apex height on the unit base
   const lac::ControlTriangle t{{0, 0}, {h / std::tan(b0), h}, {1, 0}};
   const Panel& p = kPanels[c.panel];
-  const lac::G1Segment g = p.r < 1 ? lac::solve_compound(t, p.alpha0, p.alpha1, p.r) : lac::solve_g1(t, p.alpha0);
+  const lac::TriangleResult g = p.r < 1 ? lac::solve_compound(t, p.alpha0, p.alpha1, p.r) : lac::solve_g1(t, p.alpha0);
   Outcome o;
-  o.status = std::string(lac::to_string(g.status));
-  o.iterations = g.iterations;
-  o.lambda0 = g.pieces.empty() ? 0 : g.pieces[0].lambda_user;
+  o.status = std::string(lac::to_string(g.summary.status));
+  o.iterations = g.summary.iterations;
+  o.lambda0 = g.info.pieces.empty() ? 0 : g.info.pieces[0].lambda_user;
   return o;
 }
 
