@@ -1,5 +1,5 @@
 // Similar-triangle search for monotonic- and compound-rhythm LA segments (001 §2–4). See
-// triangle_g1.hpp for the conventions.
+// triangle_g1.hpp for the conventions and docs/planar_segments.md for the drawable-region argument.
 #include "lac/constructions/triangle_g1.hpp"
 
 #include <algorithm>
@@ -181,6 +181,94 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
   return t;
 }
 
+/// The supremum of the trial curves' start angle over Λ0 ∈ [0, Λmax): its limit as Λ0 → Λmax,
+/// the start angle being increasing in Λ0 (docs/planar_segments.md). `angle` = θ where the limit
+/// curve's weight ρ(ψ) is not integrable (it concentrates at the end: 0 ≤ α < 1 at a ρ → ∞ end,
+/// α1 ≥ 1 after a segment 0 whose ρc → ∞); otherwise arg of the limit curve's chord, its pieces
+/// at the ends of their domains in closed-form substitutions, the others by position_at.
+struct Limit {
+  double angle = 0;
+  double error = 0;  ///< estimate of |angle − exact| (rad)
+  long evaluations = 0;
+  bool ok = true;    ///< false when an integral failed: nothing is proven
+};
+
+Limit start_angle_limit(const Problem& p) {
+  const GkTanhSinh method;
+  Limit lim;
+  struct Part {
+    Point2 value;
+    double error = 0;  // absolute
+  };
+  auto add = [&](const auto& r) {
+    lim.evaluations += r.evaluations;
+    if (!usable(r.status)) lim.ok = false;
+  };
+  // Piece ending where ρ → ∞ (α < 0, Λ = 1/((1−α)T)) or starting where ρ = 0 (α > 1,
+  // Λ = 1/((α−1)T)), ρ = 1 at its other end, turning T, in the frame of its start tangent:
+  // C = Tγ J (ρ = 0 start) or Tγ e^{iT} conj(J) (ρ = ∞ end), J = ∫_0^1 e^{iT v^γ} dv,
+  // γ = (α−1)/α, after the substitution v^γ = ψ/T or 1 − ψ/T (v ∝ s, the s-form).
+  auto end_piece = [&](double alpha, double T, bool rho_zero_start) -> Part {
+    const double gamma = (alpha - 1.0) / alpha, factor = T * gamma;
+    if (!std::isfinite(gamma) || !(factor > 0) || !std::isfinite(factor)) {
+      lim.ok = false;
+      return {};
+    }
+    const auto r = method.integrate([=](double v) { return std::polar(1.0, T * std::pow(v, gamma)); }, 0.0, 1.0);
+    add(r);
+    return {factor * (rho_zero_start ? r.value : std::polar(1.0, T) * std::conj(r.value)), factor * r.error_estimate};
+  };
+  auto regular = [&](const LaCurve& curve, double theta) -> Part {
+    const PositionResult r = position_at(curve, Parameter::theta, theta, method);
+    add(r);
+    return {r.point.position, r.error_estimate};
+  };
+  const Limit concentrated{p.turning, 0, 0, true};  // the weight concentrates at the end: φ → θ
+  const bool compound = p.theta1 > 0;
+  Part chord;           // of the limit curve
+  double rotation = 0;  // its start tangent's angle in the frame of `chord`
+  try {
+    if (!p.configuration_b) {
+      if (!compound) {
+        if (p.alpha0 >= 0) return concentrated;
+        chord = end_piece(p.alpha0, p.turning, false);
+      } else if (p.alpha1 >= 1) {
+        // Λ0 → Λmax makes ρc → ∞ and Λ1' → ∞: segment 0 shrinks relative to segment 1, which
+        // tends to the piece from ρ = 0 (α1 > 1) or concentrates at its end (α1 = 1).
+        if (p.alpha1 == 1) return concentrated;
+        chord = end_piece(p.alpha1, p.theta1, true);
+        rotation = -p.theta0;
+      } else if (p.alpha1 >= 0) {
+        return concentrated;
+      } else {  // segment 1 ends at its inflection; segment 0 is regular at Λmax
+        const LaCurve c0(p.alpha0, 1.0 / p.d());
+        const double rho_c = std::exp(c0.log_rho_at_theta(p.theta0));
+        const Part s0 = regular(c0, p.theta0), s1 = end_piece(p.alpha1, p.theta1, false);
+        chord = {s0.value + rho_c * std::polar(1.0, p.theta0) * s1.value, s0.error + rho_c * s1.error};
+      }
+    } else {
+      // The segment with the larger term of D = max(d0, d1) reaches the end of its domain.
+      const bool end0 = p.d0 >= p.d1, end1 = compound && p.d1 >= p.d0;
+      if (end1 && p.alpha1 >= 0) return concentrated;
+      const double lambda = 1.0 / p.d();
+      // In the frame of the joint tangent (ρ = 1 there); the start tangent is −θ0.
+      Part s0 = end0 ? end_piece(p.alpha0, p.theta0, true) : regular(LaCurve(p.alpha0, lambda), -p.theta0);
+      s0.value = end0 ? std::polar(1.0, -p.theta0) * s0.value : -s0.value;
+      Part s1;
+      if (compound) s1 = end1 ? end_piece(p.alpha1, p.theta1, false) : regular(LaCurve(p.alpha1, lambda), p.theta1);
+      chord = {s0.value + s1.value, s0.error + s1.error};
+      rotation = -p.theta0;
+    }
+  } catch (const InputError&) {
+    lim.ok = false;
+  }
+  const double modulus = std::abs(chord.value);
+  lim.angle = std::atan2(chord.value.imag(), chord.value.real()) - rotation;
+  lim.error = chord.error / modulus;
+  if (!(modulus > 0) || !std::isfinite(lim.angle) || !std::isfinite(lim.error)) lim.ok = false;
+  return lim;
+}
+
 /// The first user-unit value of a solution that is not a finite double (nullptr if none). ρ at the
 /// large-ρ end of the last piece may be +inf (the curve ends straight: κ underflows to 0).
 const char* unrepresentable(const TriangleInfo& info, const Similarity& to_user) {
@@ -236,6 +324,7 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   info.compound = compound;
   info.turning = c.sign * c.turning;
   info.segment0_at_a0 = !c.swapped;
+  info.target_angle = c.target;
 
   // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
   // The trial with the smallest |f| is kept: the root finders return that point, so the
@@ -260,13 +349,16 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   if (std::abs(f0) > o.root.f_atol) {
     // Grow the bracket toward u_max until the sign changes (001: "extended" bisection).
     Bracket b{0.0, 0.0, f0, 0.0};
-    bool found = false;
+    bool found = false, unrepresentable_trial = false;
     double delta = 0.5;
     for (int k = 0; k < o.max_bracket_probes; ++k, delta *= 0.1) {
       const double u = p.u_max * (1.0 - delta);
       const double fu = mismatch(u);
       ++info.bracket_probes;
-      if (!std::isfinite(fu)) break;  // not representable any closer to the end of the range
+      if (!std::isfinite(fu)) {  // not representable any closer to the end of the range
+        unrepresentable_trial = true;
+        break;
+      }
       if (fu >= 0) {
         b.hi = u;
         b.f_hi = fu;
@@ -277,11 +369,31 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
       b.f_lo = fu;
     }
     if (!found) {
-      sum.status = Status::no_solution;
-      sum.message = std::string(fn) + ": outside the drawable region (or closer to the end of the Lambda0 range than double " +
-                    "precision resolves): the start angle of the trial curves stays below the control triangle's (" +
-                    format_number(c.target) + " rad) up to Lambda0 = " + format_number(p.lambda_of(b.lo)) + " (range (0, " +
-                    (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + "))";
+      // φ increases with Λ0: no curve iff the target is at or above φ's limit at the end of the range.
+      const Limit lim = start_angle_limit(p);
+      sum.evaluations += lim.evaluations;
+      if (lim.ok) info.start_angle_limit = lim.angle;
+      const std::string range = "(0, " + (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + ")";
+      if (lim.ok && c.target >= lim.angle + 1e-12 + lim.error) {
+        sum.status = Status::no_solution;
+        sum.message = std::string(fn) + ": outside the drawable region: the start angle of the curves increases with " +
+                      "Lambda0 over " + range + " toward " + format_number(lim.angle) +
+                      " rad, and the control triangle needs " + format_number(c.target) + " rad";
+        return g;
+      }
+      // Not proven outside: the search stalled.
+      sum.status = Status::not_converged;
+      sum.message = std::string(fn) + ": no sign change of the start-angle mismatch in " +
+                    std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.lo)) +
+                    " of " + range +
+                    (unrepresentable_trial ? " (the next trial curve is not representable in double precision)" : "") +
+                    "; " +
+                    (lim.ok ? "the start angle tends to " + format_number(lim.angle) + " rad and the control triangle needs " +
+                                  format_number(c.target) +
+                                  " rad, so a curve exists unless the two are equal within the limit's accuracy " +
+                                  format_number(1e-12 + lim.error) + " rad (Lambda0 closer to the end of the range than " +
+                                  "the probes resolve)"
+                            : std::string("the limit of the start angle could not be computed"));
       return g;
     }
     const RootResult root = find_root(o.solver, mismatch, b, o.root);

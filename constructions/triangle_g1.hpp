@@ -15,9 +15,12 @@
 // turn), or swapped (|a1 − a0| > |a2 − a1|: ρ then decreases from a0 to a2). As in 001, segment 0
 // is always the segment at the small-ρ end (the end with the shorter control leg).
 // Degenerate input (NaN, coincident or collinear points, turning ≥ π, side lengths beyond the
-// double range: parameter "points") throws InputError. Statuses: no_solution when the bracket
-// search finds no sign change (outside the drawable region, or Λ0 closer to the end of its range
-// than double precision resolves); a root finder's failure as its own status; tolerance_not_met (usable) when the solution's
+// double range: parameter "points") throws InputError. Statuses: no_solution when the triangle is
+// proven outside the drawable region (the start angle of the trial curves increases with Λ0, and
+// the triangle's angle is at or above its limit at the end of the Λ0 range, docs/planar_segments.md);
+// not_converged when no sign change was found and nothing is proven (a curve exists when the
+// angle is below the limit: Λ0 closer to the end of its range than double precision resolves);
+// a root finder's failure as its own status; tolerance_not_met (usable) when the solution's
 // positions or end tangents miss their tolerances; numerical_failure when the solution has no
 // double-precision description in user units.
 //
@@ -25,6 +28,7 @@
 //   lac::TriangleResult g = lac::solve_compound(t, -0.5, 1.5, 0.4, {.integrator = lac::Rk45{}});
 //   if (g.usable()) { g.curve.length(); g.curve.kappa_at(0); g.info.pieces[1].lambda; g.curve.sample(200); }
 #include <complex>
+#include <optional>
 #include <vector>
 
 #include "lac/common/summary.hpp"
@@ -84,8 +88,12 @@ struct TriangleInfo {
   Point2 joint{};        ///< user coordinates (compound only)
   double rho_joint = 0;  ///< user units (compound only)
   double turning = 0;    ///< signed total turning a0 → a2 (rad, left turn positive)
-  double residual = 0;   ///< start-angle mismatch at the solution (rad)
-  int bracket_probes = 0;  ///< trial curves spent finding the bracket
+  double target_angle = 0;  ///< angle of the control triangle at its short-leg end (rad), the search's target
+  double residual = 0;      ///< start-angle mismatch at the solution (rad)
+  int bracket_probes = 0;   ///< trial curves spent finding the bracket
+  /// Limit of the trial curves' start angle as Λ0 → end of its range (rad; computed only when the
+  /// bracket search found no sign change): the triangle is drawable iff target_angle is below it.
+  std::optional<double> start_angle_limit;
 };
 
 using TriangleResult = Result<PlanarCurve, TriangleInfo>;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <tuple>
@@ -391,6 +392,12 @@ TEST(PlanarSegments, IsoscelesTriangleGivesTheCircularArc) {
   }
 }
 
+/// Control triangle on the unit base with base angles b0 (at a0) and b2 (at a2).
+ControlTriangle base_angles(double b0, double b2) {
+  const double h = std::sin(b0) * std::sin(b2) / std::sin(b0 + b2);
+  return {{0, 0}, {h / std::tan(b0), h}, {1, 0}};
+}
+
 TEST(PlanarSegments, OutsideTheDrawableRegionIsAStatus) {
   const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
   const TriangleResult g = solve_g1(t, 5.0);  // α > 1: ρ reaches 0 before the start angle is large enough
@@ -399,8 +406,58 @@ TEST(PlanarSegments, OutsideTheDrawableRegionIsAStatus) {
   EXPECT_TRUE(g.info.pieces.empty());
   EXPECT_TRUE(g.curve.segments().empty());
   EXPECT_THROW(g.curve.sample(10), InputError);
+  ASSERT_TRUE(g.info.start_angle_limit.has_value());
+  EXPECT_GE(g.info.target_angle, *g.info.start_angle_limit);
   const TriangleResult h = solve_g1({{10, 0}, {2, 0}, {0, 3}}, 3.0);
   EXPECT_EQ(h.summary.status, Status::no_solution);
+  // α = 0: the start angle tends to the turning as Λ0 → Λmax (the length diverges), so a curve
+  // exists for every triangle; for this skewed one its Λ0 lies closer to Λmax than the probes
+  // resolve in double precision: not_converged, not no_solution.
+  const TriangleResult z = solve_g1(base_angles(2.9, 0.04), 0.0);
+  EXPECT_EQ(z.summary.status, Status::not_converged) << z.summary.message;
+  ASSERT_TRUE(z.info.start_angle_limit.has_value());
+  EXPECT_NEAR(*z.info.start_angle_limit, 2.94, 1e-14);
+  EXPECT_LT(z.info.target_angle, *z.info.start_angle_limit);
+  EXPECT_NE(z.summary.message.find("probes"), std::string::npos) << z.summary.message;
+}
+
+// The start angle increases with Λ0 (docs/planar_segments.md), so over the triangles of one
+// turning the solution Λ0 increases with the target angle, every solved target lies below the
+// start angle's limit and every no_solution target at or above it.
+TEST(PlanarSegments, DrawableExactlyBelowTheLimitOfTheStartAngle) {
+  struct Family {
+    double alpha0, alpha1, r;  // r = 1: monotonic
+  };
+  const Family families[] = {{-1, -1, 1}, {2, 2, 1}, {3, 3, 1}, {-1, 2, 0.3}, {0.5, 2, 0.5}, {2, -1, 0.5}, {3, 0, 0.5}, {-2, -0.5, 0.5}};
+  for (const Family& fam : families) {
+    for (double turning : {0.6, 1.5, 2.6}) {
+      std::vector<std::pair<double, double>> solved;  // target, Λ0 (the search variable, standard-form units)
+      std::optional<double> limit;
+      int none = 0;
+      for (int i = 1; i < 200; ++i) {
+        const double b0 = turning * (0.5 + 0.5 * i / 200.0);  // the target angle, from θ/2 to θ
+        const ControlTriangle t = base_angles(b0, turning - b0);
+        const TriangleResult g = fam.r < 1 ? solve_compound(t, fam.alpha0, fam.alpha1, fam.r) : solve_g1(t, fam.alpha0);
+        if (g.info.start_angle_limit) {
+          if (limit) EXPECT_NEAR(*limit, *g.info.start_angle_limit, 1e-14);  // depends on α0, α1, r and θ only
+          limit = g.info.start_angle_limit;
+        }
+        if (g.summary.status == Status::ok) {
+          solved.push_back({g.info.target_angle, g.info.pieces[0].lambda});
+        } else if (g.summary.status == Status::not_converged) {  // a curve exists, Λ0 not resolved
+          EXPECT_LT(g.info.target_angle, *g.info.start_angle_limit);
+        } else {
+          ASSERT_EQ(g.summary.status, Status::no_solution) << g.summary.message;
+          EXPECT_GE(g.info.target_angle, *g.info.start_angle_limit);
+          ++none;
+        }
+      }
+      ASSERT_GT(none, 0) << fam.alpha0 << " " << fam.alpha1 << " " << turning;
+      ASSERT_GT(solved.size(), 10u);
+      for (size_t i = 1; i < solved.size(); ++i) EXPECT_GT(solved[i].second, solved[i - 1].second);
+      EXPECT_LT(solved.back().first, *limit);
+    }
+  }
 }
 
 void expect_input_error(const std::function<void()>& f, const std::string& parameter) {
