@@ -134,7 +134,8 @@ struct Trial {
   double phi = 0;      ///< angle at the start between its tangent and the chord
   StandardCurve form;
   long evaluations = 0;
-  Status status = Status::ok;
+  Status status = Status::ok;  ///< of the positions (the first one not ok)
+  std::string message;         ///< the positions' message when status is not ok
 };
 
 LaCurve segment1_curve(const Problem& p, const StandardCurve& f) {
@@ -154,6 +155,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method);
       t.evaluations += r0.evaluations;
       t.status = r0.status;
+      t.message = r0.message;
       f.joint = r0.point.position;
       f.log_rho_joint = c0.log_rho_at_theta(p.theta0);
       joint_tangent = p.theta0;
@@ -161,6 +163,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       const PositionResult r0 = position_at(c0, Parameter::theta, -p.theta0, method);
       t.evaluations += r0.evaluations;
       t.status = r0.status;
+      t.message = r0.message;
       f.start = r0.point.position;
       f.start_tangent = -p.theta0;
     }
@@ -168,7 +171,10 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     if (p.theta1 > 0) {
       const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method);
       t.evaluations += r1.evaluations;
-      if (r1.status != Status::ok && t.status == Status::ok) t.status = r1.status;
+      if (r1.status != Status::ok && t.status == Status::ok) {
+        t.status = r1.status;
+        t.message = r1.message;
+      }
       f.end = f.joint + std::exp(f.log_rho_joint) * std::polar(1.0, joint_tangent) * r1.point.position;
     }
     const Point2 chord = (f.end - f.start) * std::polar(1.0, -f.start_tangent);
@@ -328,14 +334,23 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
 
   // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
   // The trial with the smallest |f| is kept: the root finders return that point, so the
-  // solution curve need not be drawn again.
+  // solution curve need not be drawn again. A trial whose positions failed (a status that is not
+  // usable, e.g. an integrator's step budget) has no value: NaN, and the first such failure is
+  // the reason given if the search ends there.
   Trial best;
   double best_u = -1, best_f = std::numeric_limits<double>::infinity();
+  Status failed = Status::ok;
+  std::string failed_message;
   auto mismatch = [&](double u) {
     Trial t = draw(p, p.lambda_of(u), method);
     ++sum.constructions;
     sum.evaluations += t.evaluations;
-    if (!t.valid) return std::numeric_limits<double>::quiet_NaN();
+    if (!usable(t.status) && failed == Status::ok) {
+      failed = t.status;
+      failed_message = "the positions of the trial curve at Lambda0 = " + format_number(p.lambda_of(u)) + " failed (" +
+                       std::string(to_string(t.status)) + (t.message.empty() ? "" : ": " + t.message) + ")";
+    }
+    if (!t.valid || !usable(t.status)) return std::numeric_limits<double>::quiet_NaN();
     const double f = t.phi - c.target;
     if (std::abs(f) < best_f) {
       best_f = std::abs(f);
@@ -355,7 +370,7 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
       const double u = p.u_max * (1.0 - delta);
       const double fu = mismatch(u);
       ++info.bracket_probes;
-      if (!std::isfinite(fu)) {  // not representable any closer to the end of the range
+      if (!std::isfinite(fu)) {  // not representable (or not integrable) any closer to the end of the range
         unrepresentable_trial = true;
         break;
       }
@@ -381,19 +396,24 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
                       " rad, and the control triangle needs " + format_number(c.target) + " rad";
         return g;
       }
-      // Not proven outside: the search stalled.
-      sum.status = Status::not_converged;
-      sum.message = std::string(fn) + ": no sign change of the start-angle mismatch in " +
-                    std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.lo)) +
-                    " of " + range +
-                    (unrepresentable_trial ? " (the next trial curve is not representable in double precision)" : "") +
-                    "; " +
-                    (lim.ok ? "the start angle tends to " + format_number(lim.angle) + " rad and the control triangle needs " +
-                                  format_number(c.target) +
-                                  " rad, so a curve exists unless the two are equal within the limit's accuracy " +
-                                  format_number(1e-12 + lim.error) + " rad (Lambda0 closer to the end of the range than " +
-                                  "the probes resolve)"
-                            : std::string("the limit of the start angle could not be computed"));
+      // Not proven outside: a trial curve's positions failed (that status), or the search stalled.
+      const bool positions_failed = unrepresentable_trial && failed != Status::ok;
+      const std::string limit_text =
+          lim.ok ? "the start angle tends to " + format_number(lim.angle) + " rad and the control triangle needs " +
+                       format_number(c.target) + " rad, so a curve exists unless the two are equal within the limit's " +
+                       "accuracy " + format_number(1e-12 + lim.error) + " rad"
+                 : std::string("the limit of the start angle could not be computed");
+      sum.status = positions_failed ? failed : Status::not_converged;
+      if (positions_failed) {
+        sum.message = std::string(fn) + ": " + failed_message + " while looking for a sign change of the start-angle " +
+                      "mismatch; " + limit_text;
+      } else {
+        sum.message = std::string(fn) + ": no sign change of the start-angle mismatch in " +
+                      std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.lo)) +
+                      " of " + range +
+                      (unrepresentable_trial ? " (the next trial curve is not representable in double precision)" : "") +
+                      "; " + limit_text + (lim.ok ? " (Lambda0 closer to the end of the range than the probes resolve)" : "");
+      }
       return g;
     }
     const RootResult root = find_root(o.solver, mismatch, b, o.root);
@@ -402,6 +422,10 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
     if (!usable(root.status) || !std::isfinite(root.root)) {
       sum.status = root.status == Status::ok ? Status::numerical_failure : root.status;
       sum.message = std::string(fn) + ": " + root.message;
+      if (failed != Status::ok) {  // the root finder met a trial without positions: that failure
+        sum.status = failed;
+        sum.message = std::string(fn) + ": " + failed_message + "; " + root.message;
+      }
       return g;
     }
     sum.status = root.status;
@@ -422,6 +446,11 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   if (!t.valid) {
     sum.status = Status::numerical_failure;
     sum.message = std::string(fn) + ": the solution curve is not representable in double precision";
+    return g;
+  }
+  if (!usable(t.status)) {
+    sum.status = t.status;
+    sum.message = std::string(fn) + ": the positions of the solution curve failed" + (t.message.empty() ? "" : ": " + t.message);
     return g;
   }
   if (t.status != Status::ok && sum.status == Status::ok) {

@@ -20,7 +20,8 @@
 // the triangle's angle is at or above its limit at the end of the Λ0 range, docs/planar_segments.md);
 // not_converged when no sign change was found and nothing is proven (a curve exists when the
 // angle is below the limit: Λ0 closer to the end of its range than double precision resolves);
-// a root finder's failure as its own status; tolerance_not_met (usable) when the solution's
+// a root finder's failure as its own status, and so the failure of a trial curve's positions (e.g.
+// an integrator's step budget: max_iterations); tolerance_not_met (usable) when the solution's
 // positions or end tangents miss their tolerances; numerical_failure when the solution has no
 // double-precision description in user units.
 //

@@ -501,6 +501,22 @@ TEST(PlanarSegments, RootFinderFailurePassesThrough) {
   EXPECT_TRUE(g.curve.segments().empty());
 }
 
+// A trial curve whose positions fail (here rk4's step budget) has no start angle: the search
+// ends with that status and says why, never with a curve drawn from a partial integral.
+TEST(PlanarSegments, FailedTrialPositionsAreTheStatus) {
+  TriangleOptions o;
+  o.integrator = Rk4{.max_steps = 10};
+  for (bool compound : {false, true}) {
+    const TriangleResult g = compound ? solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, 1.5, 0.4, o)
+                                      : solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, o);
+    EXPECT_EQ(g.summary.status, Status::max_iterations) << g.summary.message;
+    EXPECT_NE(g.summary.message.find("positions of the trial curve"), std::string::npos) << g.summary.message;
+    EXPECT_NE(g.summary.message.find("rk4"), std::string::npos) << g.summary.message;
+    EXPECT_TRUE(g.curve.segments().empty());
+    EXPECT_EQ(g.summary.integrator, "rk4");
+  }
+}
+
 TEST(PlanarSegments, SummaryCountsTheWork) {
   const TriangleResult g = solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, 1.5, 0.4);
   ASSERT_EQ(g.summary.status, Status::ok);
