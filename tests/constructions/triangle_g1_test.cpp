@@ -120,6 +120,69 @@ TEST(PlanarSegments, IntegratorChoiceAgrees) {
   }
 }
 
+// Every construction × integrator × root solver of the registries: the table's rows of that
+// construction against the mpmath reference at the integrator's tolerance, and against the
+// default (gk-tanh-sinh, toms748) solve of the same row at that tolerance.
+struct Combination {
+  bool compound;
+  std::string integrator, solver;
+};
+
+void PrintTo(const Combination& c, std::ostream* os) {
+  *os << (c.compound ? "compound" : "g1") << " / " << c.integrator << " / " << c.solver;
+}
+
+std::vector<Combination> all_combinations() {
+  std::vector<Combination> out;
+  for (bool compound : {false, true})
+    for (const MethodInfo& q : quadrature_methods())
+      for (const RootMethodInfo& r : root_methods()) out.push_back({compound, std::string(q.name), std::string(r.name)});
+  return out;
+}
+
+class EveryIntegratorAndSolver : public ::testing::TestWithParam<Combination> {};
+
+TEST_P(EveryIntegratorAndSolver, AgreesWithTheReferenceAndTheDefault) {
+  const Combination& c = GetParam();
+  const auto t = test::read_reference_csv("planar_segments.csv");
+  TriangleOptions o;
+  o.integrator = make_quadrature(c.integrator);
+  o.solver = parse_root_method(c.solver);
+  const double tol = kIntegratorTol.at(c.integrator);
+  int rows = 0;
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    if ((cell(t, i, "kind") == "compound") != c.compound) continue;
+    ++rows;
+    const std::string where = cell(t, i, "name") + " / " + c.integrator + " / " + c.solver;
+    const auto [e, worst] = reference_error(t, i, o, where);
+    EXPECT_LE(e, tol) << worst;
+    const ControlTriangle tri{{t.number(i, "x0"), t.number(i, "y0")}, {t.number(i, "x1"), t.number(i, "y1")},
+                              {t.number(i, "x2"), t.number(i, "y2")}};
+    auto solve = [&](const TriangleOptions& opt) {
+      return c.compound ? solve_compound(tri, t.number(i, "alpha0"), t.number(i, "alpha1"), t.number(i, "r"), opt)
+                        : solve_g1(tri, t.number(i, "alpha0"), opt);
+    };
+    const TriangleResult g = solve(o), ref = solve(TriangleOptions{});
+    ASSERT_TRUE(g.usable() && ref.usable()) << where;
+    EXPECT_LE(*g.summary.residuals.angle, o.tangent_tolerance) << where;
+    EXPECT_LE(rel(g.curve.length(), ref.curve.length()), tol) << where;
+    EXPECT_LE(rel(g.info.pieces[0].lambda_user, ref.info.pieces[0].lambda_user), tol) << where;
+    EXPECT_LE(rel(kappa_start(g), kappa_start(ref)), tol) << where;
+    EXPECT_LE(rel(kappa_end(g), kappa_end(ref)), tol) << where;
+    ASSERT_EQ(g.curve.segments().size(), c.compound ? 2u : 1u) << where;
+    if (c.compound) EXPECT_LE(std::abs(g.info.joint - ref.info.joint), tol * g.curve.length()) << where;
+  }
+  EXPECT_GE(rows, 8);
+}
+
+INSTANTIATE_TEST_SUITE_P(PlanarSegments, EveryIntegratorAndSolver, ::testing::ValuesIn(all_combinations()),
+                         [](const ::testing::TestParamInfo<Combination>& info) {
+                           std::string name = std::string(info.param.compound ? "compound_" : "g1_") + info.param.integrator +
+                                              "_" + info.param.solver;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
 /// Random triangles of every orientation and scale, both turning directions, both leg orders.
 std::vector<ControlTriangle> random_triangles(int n, unsigned seed) {
   std::mt19937_64 rng(seed);
