@@ -32,36 +32,36 @@ std::vector<Case> drawable_cases(bool compound, int n) {
     const Point2 rot = std::polar(std::pow(10.0, 2 * u(rng) - 1), 2 * std::numbers::pi * u(rng));
     const ControlTriangle t{0, Point2{h / std::tan(b0), h} * rot, rot};
     Case c{t, alphas[rng() % 9], alphas[rng() % 9], 0.2 + 0.6 * u(rng)};
-    const G1Segment g = compound ? solve_compound(c.t, c.alpha0, c.alpha1, c.r) : solve_g1(c.t, c.alpha0);
-    if (g.status == Status::ok) out.push_back(c);
+    const TriangleResult g = compound ? solve_compound(c.t, c.alpha0, c.alpha1, c.r) : solve_g1(c.t, c.alpha0);
+    if (g.summary.status == Status::ok) out.push_back(c);
   }
   return out;
 }
 
 void BM_Monotonic(benchmark::State& state, RootMethod solver) {
   static const std::vector<Case> cases = drawable_cases(false, 64);
-  SegmentOptions o;
+  TriangleOptions o;
   o.solver = solver;
   size_t k = 0, failures = 0;
   for (auto _ : state) {
     const Case& c = cases[k++ % cases.size()];
-    const G1Segment g = solve_g1(c.t, c.alpha0, o);
-    failures += g.status != Status::ok;
-    benchmark::DoNotOptimize(g.length);
+    const TriangleResult g = solve_g1(c.t, c.alpha0, o);
+    failures += g.summary.status != Status::ok;
+    benchmark::DoNotOptimize(g.curve.length());
   }
   state.counters["failures"] = static_cast<double>(failures);
 }
 
 void BM_Compound(benchmark::State& state, RootMethod solver) {
   static const std::vector<Case> cases = drawable_cases(true, 64);
-  SegmentOptions o;
+  TriangleOptions o;
   o.solver = solver;
   size_t k = 0, failures = 0;
   for (auto _ : state) {
     const Case& c = cases[k++ % cases.size()];
-    const G1Segment g = solve_compound(c.t, c.alpha0, c.alpha1, c.r, o);
-    failures += g.status != Status::ok;
-    benchmark::DoNotOptimize(g.length);
+    const TriangleResult g = solve_compound(c.t, c.alpha0, c.alpha1, c.r, o);
+    failures += g.summary.status != Status::ok;
+    benchmark::DoNotOptimize(g.curve.length());
   }
   state.counters["failures"] = static_cast<double>(failures);
 }
@@ -71,11 +71,11 @@ void BM_Compound(benchmark::State& state, RootMethod solver) {
 // the mean over the loop, i.e. over the mix).
 void BM_MonotonicOneShape(benchmark::State& state) {
   const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
-  for (auto _ : state) benchmark::DoNotOptimize(solve_g1(t, static_cast<double>(state.range(0)) / 2).length);
+  for (auto _ : state) benchmark::DoNotOptimize(solve_g1(t, static_cast<double>(state.range(0)) / 2).curve.length());
 }
 void BM_CompoundOneShape(benchmark::State& state) {
   const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
-  for (auto _ : state) benchmark::DoNotOptimize(solve_compound(t, -1, 1.5, 0.4).length);
+  for (auto _ : state) benchmark::DoNotOptimize(solve_compound(t, -1, 1.5, 0.4).curve.length());
 }
 BENCHMARK(BM_MonotonicOneShape)->Arg(-2)->Arg(0)->Arg(2)->Arg(4)->Unit(benchmark::kMicrosecond);  // α = -1, 0, 1, 2
 BENCHMARK(BM_CompoundOneShape)->Unit(benchmark::kMicrosecond);

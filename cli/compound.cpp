@@ -1,9 +1,6 @@
 // lac compound: compound-rhythm LA curve from control points, α0, α1 and r (001 §4).
-#include <optional>
-
 #include "cli/command.hpp"
 #include "cli/segment_args.hpp"
-#include "io/timing.hpp"
 #include "lac/constructions/triangle_g1.hpp"
 
 namespace lac::cli {
@@ -25,10 +22,7 @@ void setup(CLI::App& app) {
   sub->add_option("--r", c->r, "Share of the total turning in segment 0, in (0, 1)")->capture_default_str();
   sub->callback([a, c] {
     const PreparedSegment s = prepare_segment(*a);
-    io::Stopwatch clock;
-    const G1Segment g = s.integrator ? solve_compound(s.triangle, c->alpha0, c->alpha1, c->r, s.options, *s.integrator)
-                                      : solve_compound(s.triangle, c->alpha0, c->alpha1, c->r, s.options);
-    print_segment(g, *a, s, clock.seconds());
+    print_segment(solve_compound(s.triangle, c->alpha0, c->alpha1, c->r, s.options), *a, s);
   });
 }
 

@@ -1,7 +1,6 @@
 #pragma once
 // Options and output shared by `lac g1` (cli/g1.cpp, which defines the functions) and
 // `lac compound` (cli/compound.cpp).
-#include <optional>
 #include <string>
 
 #include "cli/command.hpp"
@@ -20,11 +19,11 @@ struct SegmentArgs {
 };
 struct PreparedSegment {
   ControlTriangle triangle;
-  SegmentOptions options;
-  std::optional<AnyQuadrature> integrator;  ///< empty: the solvers' default (gk-tanh-sinh)
+  TriangleOptions options;          ///< integrator: the construction's default unless --integrator names one
+  bool explicit_integrator = false;
 };
 void add_segment_options(CLI::App& sub, SegmentArgs& a);
 PreparedSegment prepare_segment(const SegmentArgs& a);
-void print_segment(const G1Segment& g, const SegmentArgs& a, const PreparedSegment& s, double seconds);
+void print_segment(const TriangleResult& g, const SegmentArgs& a, const PreparedSegment& s);
 
 }  // namespace lac::cli

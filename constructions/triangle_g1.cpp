@@ -1,13 +1,17 @@
-// Similar-triangle search for monotonic- and compound-rhythm LA segments (001 §2–4,
-// MATH.md §2). See g1_segment.hpp for the conventions.
+// Similar-triangle search for monotonic- and compound-rhythm LA segments (001 §2–4). See
+// triangle_g1.hpp for the conventions and docs/planar_segments.md for the drawable-region argument.
 #include "lac/constructions/triangle_g1.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/curves/planar/standard_form.hpp"
 
 namespace lac {
 namespace {
@@ -37,7 +41,7 @@ struct Canonical {
 
 double cross(Point2 u, Point2 v) { return u.real() * v.imag() - u.imag() * v.real(); }
 
-Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const char* fn) {
+Canonical canonicalize(const ControlTriangle& t, const TriangleOptions& o, const char* fn) {
   const char* names[6] = {"a0.x", "a0.y", "a1.x", "a1.y", "a2.x", "a2.y"};
   const double v[6] = {t.a0.real(), t.a0.imag(), t.a1.real(), t.a1.imag(), t.a2.real(), t.a2.imag()};
   for (int k = 0; k < 6; ++k) require_finite(fn, names[k], v[k]);
@@ -83,50 +87,66 @@ Canonical canonicalize(const ControlTriangle& t, const SegmentOptions& o, const 
 }
 
 /// Everything the search varies for one Λ0: the standard-form curve of 001 Fig. 5.
+///
+/// Λ0 < 1/D keeps both segments inside their θ domains: segment 0 needs d0 Λ0 < 1 with
+/// d0 = (1−α0)θ0 (configuration a) or (α0−1)θ0 (b); segment 1, when α1 < 1, needs
+/// (1−α1)Λ1'θ1 < 1 with Λ1' = Λ0 ρc^(1−α0), i.e. (d0 + d1)Λ0 < 1 in configuration a
+/// (ρc^(α0−1) = 1 − (1−α0)Λ0θ0) and d1 Λ0 < 1 in b (ρc = 1), d1 = max(0, 1−α1)θ1. This is
+/// 001 §4's "search a smaller Λ0" rule in closed form.
 struct Problem {
   double alpha0, alpha1, theta0, theta1;
   bool configuration_b;
   double turning;  // θ0 + θ1
+  double d0, d1;   // the segments' terms of D
   double u_max;    // end of the search variable's range (1 = unbounded Λ0)
 
+  double d() const { return configuration_b ? std::max(d0, d1) : d0 + d1; }
   // u = w/(1+w), w = Λ0 θ: maps Λ0 ∈ (0, Λmax) onto (0, u_max) for every α0, including the
   // unbounded α0 = 1 (001: "the bisection method is extended").
   double lambda_of(double u) const { return u / (1.0 - u) / turning; }
 };
 
-/// Λ0 < 1/D keeps both segments inside their θ domains (MATH.md §1 table): segment 0 needs
-/// (1−α0)Λ0θ0 < 1 (configuration a) or (α0−1)Λ0θ0 < 1 (b); segment 1, when α1 < 1, needs
-/// (1−α1)Λ1'θ1 < 1 with Λ1' = Λ0 ρc^(1−α0), i.e. (1−α0)Λ0θ0 + (1−α1)Λ0θ1 < 1 in configuration
-/// a (ρc^(α0−1) = 1 − (1−α0)Λ0θ0) and (1−α1)Λ0θ1 < 1 in b (ρc = 1). This is 001 §4's
-/// "search a smaller Λ0" rule in closed form.
 Problem make_problem(double alpha0, double alpha1, double theta0, double theta1) {
-  Problem p{alpha0, alpha1, theta0, theta1, alpha0 > 1, theta0 + theta1, 1.0};
-  const double seg1 = theta1 > 0 ? std::max(0.0, 1.0 - alpha1) * theta1 : 0.0;
-  const double d = p.configuration_b ? std::max((alpha0 - 1.0) * theta0, seg1) : (1.0 - alpha0) * theta0 + seg1;
-  if (d > 0) {
+  const bool b = alpha0 > 1;
+  Problem p{alpha0, alpha1, theta0, theta1, b, theta0 + theta1, b ? (alpha0 - 1.0) * theta0 : (1.0 - alpha0) * theta0,
+            theta1 > 0 ? std::max(0.0, 1.0 - alpha1) * theta1 : 0.0, 1.0};
+  if (const double d = p.d(); d > 0) {
     const double w_max = p.turning / d;
     p.u_max = w_max / (1.0 + w_max);
   }
   return p;
 }
 
+/// A trial curve in standard form (001 Fig. 5). Segment 0 is LaCurve(α0, Λ0) over θ ∈ [0, θ0]
+/// (configuration a, α0 ≤ 1) or [−θ0, 0] (configuration b, α0 > 1). Segment 1 is drawn from the
+/// joint J in its own standard form scaled by ρc: LaCurve(α1, Λ0 ρc^(1−α0)) over [0, θ1]
+/// (equivalent to 001's θs … θs + θ1 on LaCurve(α1, Λ1), without the cancellation of
+/// C(θs + θ1) − C(θs)).
+struct StandardCurve {
+  double lambda0 = 0;
+  double log_rho_joint = 0;  ///< log ρc (0 in configuration b)
+  Point2 start{}, joint{}, end{};
+  double start_tangent = 0;  ///< θ at the start point
+};
+
 struct Trial {
   bool valid = false;  ///< false when the curve is not representable (overflow near a domain end)
   double phi = 0;      ///< angle at the start between its tangent and the chord
-  StandardForm form;
+  StandardCurve form;
   long evaluations = 0;
-  Status status = Status::ok;
+  Status status = Status::ok;  ///< of the positions (the first one not ok)
+  std::string message;         ///< the positions' message when status is not ok
 };
+
+LaCurve segment1_curve(const Problem& p, const StandardCurve& f) {
+  // Λ1' = Λ0 ρc^(1−α0) = dρ/ds at the joint (001 Eq. (3.5) expressed at ρ = ρc).
+  return LaCurve(p.alpha1, f.lambda0 * std::exp((1.0 - p.alpha0) * f.log_rho_joint));
+}
 
 template <class M>
 Trial draw(const Problem& p, double lambda0, const M& method) {
   Trial t;
-  StandardForm& f = t.form;
-  f.alpha0 = p.alpha0;
-  f.alpha1 = p.alpha1;
-  f.theta0 = p.theta0;
-  f.theta1 = p.theta1;
-  f.configuration_b = p.configuration_b;
+  StandardCurve& f = t.form;
   f.lambda0 = lambda0;
   try {
     const LaCurve c0(p.alpha0, lambda0);
@@ -135,8 +155,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method);
       t.evaluations += r0.evaluations;
       t.status = r0.status;
-      f.start = 0;
-      f.start_tangent = 0;
+      t.message = r0.message;
       f.joint = r0.point.position;
       f.log_rho_joint = c0.log_rho_at_theta(p.theta0);
       joint_tangent = p.theta0;
@@ -144,21 +163,19 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       const PositionResult r0 = position_at(c0, Parameter::theta, -p.theta0, method);
       t.evaluations += r0.evaluations;
       t.status = r0.status;
+      t.message = r0.message;
       f.start = r0.point.position;
       f.start_tangent = -p.theta0;
-      f.joint = 0;
-      f.log_rho_joint = 0;
     }
     f.end = f.joint;
     if (p.theta1 > 0) {
-      // Segment 1 in its own standard form at the joint, scaled by ρc: Λ1' = Λ0 ρc^(1−α0)
-      // = dρ/ds at the joint (001 Eq. (3.5) expressed at ρ = ρc).
-      const double rho_c = std::exp(f.log_rho_joint);
-      const LaCurve c1(p.alpha1, lambda0 * std::exp((1.0 - p.alpha0) * f.log_rho_joint));
-      const PositionResult r1 = position_at(c1, Parameter::theta, p.theta1, method);
+      const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method);
       t.evaluations += r1.evaluations;
-      if (r1.status != Status::ok && t.status == Status::ok) t.status = r1.status;
-      f.end = f.joint + rho_c * std::polar(1.0, joint_tangent) * r1.point.position;
+      if (r1.status != Status::ok && t.status == Status::ok) {
+        t.status = r1.status;
+        t.message = r1.message;
+      }
+      f.end = f.joint + std::exp(f.log_rho_joint) * std::polar(1.0, joint_tangent) * r1.point.position;
     }
     const Point2 chord = (f.end - f.start) * std::polar(1.0, -f.start_tangent);
     t.phi = std::atan2(chord.imag(), chord.real());
@@ -170,30 +187,131 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
   return t;
 }
 
-/// The first user-unit result of `g` that is not a finite double (nullptr if none). ρ at the
+/// The supremum of the trial curves' start angle over Λ0 ∈ [0, Λmax): its limit as Λ0 → Λmax,
+/// the start angle being increasing in Λ0 (docs/planar_segments.md). `angle` = θ where the limit
+/// curve's weight ρ(ψ) is not integrable (it concentrates at the end: 0 ≤ α < 1 at a ρ → ∞ end,
+/// α1 ≥ 1 after a segment 0 whose ρc → ∞); otherwise arg of the limit curve's chord, its pieces
+/// at the ends of their domains in closed-form substitutions, the others by position_at.
+struct Limit {
+  double angle = 0;
+  double error = 0;  ///< estimate of |angle − exact| (rad)
+  long evaluations = 0;
+  bool ok = true;    ///< false when an integral failed: nothing is proven
+};
+
+Limit start_angle_limit(const Problem& p) {
+  const GkTanhSinh method;
+  Limit lim;
+  struct Part {
+    Point2 value;
+    double error = 0;  // absolute
+  };
+  auto add = [&](const auto& r) {
+    lim.evaluations += r.evaluations;
+    if (!usable(r.status)) lim.ok = false;
+  };
+  // Piece ending where ρ → ∞ (α < 0, Λ = 1/((1−α)T)) or starting where ρ = 0 (α > 1,
+  // Λ = 1/((α−1)T)), ρ = 1 at its other end, turning T, in the frame of its start tangent:
+  // C = Tγ J (ρ = 0 start) or Tγ e^{iT} conj(J) (ρ = ∞ end), J = ∫_0^1 e^{iT v^γ} dv,
+  // γ = (α−1)/α, after the substitution v^γ = ψ/T or 1 − ψ/T (v ∝ s, the s-form).
+  auto end_piece = [&](double alpha, double T, bool rho_zero_start) -> Part {
+    const double gamma = (alpha - 1.0) / alpha, factor = T * gamma;
+    if (!std::isfinite(gamma) || !(factor > 0) || !std::isfinite(factor)) {
+      lim.ok = false;
+      return {};
+    }
+    const auto r = method.integrate([=](double v) { return std::polar(1.0, T * std::pow(v, gamma)); }, 0.0, 1.0);
+    add(r);
+    return {factor * (rho_zero_start ? r.value : std::polar(1.0, T) * std::conj(r.value)), factor * r.error_estimate};
+  };
+  auto regular = [&](const LaCurve& curve, double theta) -> Part {
+    const PositionResult r = position_at(curve, Parameter::theta, theta, method);
+    add(r);
+    return {r.point.position, r.error_estimate};
+  };
+  const Limit concentrated{p.turning, 0, 0, true};  // the weight concentrates at the end: φ → θ
+  const bool compound = p.theta1 > 0;
+  Part chord;           // of the limit curve
+  double rotation = 0;  // its start tangent's angle in the frame of `chord`
+  try {
+    if (!p.configuration_b) {
+      if (!compound) {
+        if (p.alpha0 >= 0) return concentrated;
+        chord = end_piece(p.alpha0, p.turning, false);
+      } else if (p.alpha1 >= 1) {
+        // Λ0 → Λmax makes ρc → ∞ and Λ1' → ∞: segment 0 shrinks relative to segment 1, which
+        // tends to the piece from ρ = 0 (α1 > 1) or concentrates at its end (α1 = 1).
+        if (p.alpha1 == 1) return concentrated;
+        chord = end_piece(p.alpha1, p.theta1, true);
+        rotation = -p.theta0;
+      } else if (p.alpha1 >= 0) {
+        return concentrated;
+      } else {  // segment 1 ends at its inflection; segment 0 is regular at Λmax
+        const LaCurve c0(p.alpha0, 1.0 / p.d());
+        const double rho_c = std::exp(c0.log_rho_at_theta(p.theta0));
+        const Part s0 = regular(c0, p.theta0), s1 = end_piece(p.alpha1, p.theta1, false);
+        chord = {s0.value + rho_c * std::polar(1.0, p.theta0) * s1.value, s0.error + rho_c * s1.error};
+      }
+    } else {
+      // The segment with the larger term of D = max(d0, d1) reaches the end of its domain.
+      const bool end0 = p.d0 >= p.d1, end1 = compound && p.d1 >= p.d0;
+      if (end1 && p.alpha1 >= 0) return concentrated;
+      const double lambda = 1.0 / p.d();
+      // In the frame of the joint tangent (ρ = 1 there); the start tangent is −θ0.
+      Part s0 = end0 ? end_piece(p.alpha0, p.theta0, true) : regular(LaCurve(p.alpha0, lambda), -p.theta0);
+      s0.value = end0 ? std::polar(1.0, -p.theta0) * s0.value : -s0.value;
+      Part s1;
+      if (compound) s1 = end1 ? end_piece(p.alpha1, p.theta1, false) : regular(LaCurve(p.alpha1, lambda), p.theta1);
+      chord = {s0.value + s1.value, s0.error + s1.error};
+      rotation = -p.theta0;
+    }
+  } catch (const InputError&) {
+    lim.ok = false;
+  }
+  const double modulus = std::abs(chord.value);
+  lim.angle = std::atan2(chord.value.imag(), chord.value.real()) - rotation;
+  lim.error = chord.error / modulus;
+  if (!(modulus > 0) || !std::isfinite(lim.angle) || !std::isfinite(lim.error)) lim.ok = false;
+  return lim;
+}
+
+/// The first user-unit value of a solution that is not a finite double (nullptr if none). ρ at the
 /// large-ρ end of the last piece may be +inf (the curve ends straight: κ underflows to 0).
-const char* unrepresentable(const G1Segment& g) {
+const char* unrepresentable(const TriangleInfo& info, const Similarity& to_user) {
   auto finite = [](Point2 z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
-  if (!std::isfinite(g.length)) return "length";
-  if (!std::isfinite(g.kappa0) || !std::isfinite(g.kappa1)) return "end curvature";
-  if (!finite(g.form.scale_rotation) || !finite(g.form.offset)) return "similarity onto the control points";
-  if (g.compound && (!finite(g.joint) || !std::isfinite(g.rho_joint) || !(g.rho_joint > 0))) return "joint";
-  for (size_t i = 0; i < g.pieces.size(); ++i) {
-    const SegmentPiece& p = g.pieces[i];
+  if (!finite(to_user.factor) || !finite(to_user.offset)) return "similarity onto the control points";
+  if (info.compound && (!finite(info.joint) || !std::isfinite(info.rho_joint) || !(info.rho_joint > 0))) return "joint";
+  for (size_t i = 0; i < info.pieces.size(); ++i) {
+    const TrianglePiece& p = info.pieces[i];
     if (!std::isfinite(p.lambda_user)) return "lambda_user";
-    if (!std::isfinite(p.length)) return "piece length";
     if (!std::isfinite(p.rho_small) || !(p.rho_small > 0)) return "rho_small";
-    const bool last = i + 1 == g.pieces.size();
+    const bool last = i + 1 == info.pieces.size();
     if (std::isnan(p.rho_large) || !(p.rho_large > 0) || (!last && std::isinf(p.rho_large))) return "rho_large";
   }
   return nullptr;
 }
 
+/// The solved standard-form curve placed on the control points, from a0 to a2 (001 §2: p0 → b0,
+/// end → b2; reversed when the triangle was swapped). InputError when a piece has no segment
+/// representation in double precision.
+PlanarCurve place(const Problem& p, const StandardCurve& f, const Similarity& to_user, const Canonical& c,
+                  const ControlTriangle& tri) {
+  const bool b = p.configuration_b;
+  std::vector<LaSegment> segments;
+  segments.push_back(to_segment({LaCurve(p.alpha0, f.lambda0), Parameter::theta, b ? -p.theta0 : 0.0, b ? 0.0 : p.theta0, to_user},
+                                b ? f.start : Point2{}));
+  if (p.theta1 > 0) {
+    const Similarity at_joint{std::exp(f.log_rho_joint) * std::polar(1.0, b ? 0.0 : p.theta0), f.joint, false};
+    segments.push_back(to_segment({segment1_curve(p, f), Parameter::theta, 0.0, p.theta1, to_user.after(at_joint)}));
+  }
+  PlanarCurve curve(std::move(segments));
+  return c.swapped ? curve.reversed(tri.a0) : curve;
+}
+
 template <class M>
-G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
-                const SegmentOptions& o, const M& method, const char* fn) {
+TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
+                     const TriangleOptions& o, const M& method, const char* fn) {
   o.validate();
-  method.validate();
   require_finite(fn, compound ? "alpha0" : "alpha", alpha0);
   if (compound) {
     require_finite(fn, "alpha1", alpha1);
@@ -204,21 +322,35 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   const double theta1 = compound ? c.turning - theta0 : 0.0;
   const Problem p = make_problem(alpha0, alpha1, theta0, theta1);
 
-  G1Segment g;
-  g.compound = compound;
-  g.turning = c.sign * c.turning;
-  g.segment0_at_a0 = !c.swapped;
+  TriangleResult g;
+  Summary& sum = g.summary;
+  TriangleInfo& info = g.info;
+  sum.integrator = std::string(M::name);
+  sum.solver = std::string(to_string(o.solver));
+  info.compound = compound;
+  info.turning = c.sign * c.turning;
+  info.segment0_at_a0 = !c.swapped;
+  info.target_angle = c.target;
 
   // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
   // The trial with the smallest |f| is kept: the root finders return that point, so the
-  // solution curve need not be drawn again.
+  // solution curve need not be drawn again. A trial whose positions failed (a status that is not
+  // usable, e.g. an integrator's step budget) has no value: NaN, and the first such failure is
+  // the reason given if the search ends there.
   Trial best;
   double best_u = -1, best_f = std::numeric_limits<double>::infinity();
+  Status failed = Status::ok;
+  std::string failed_message;
   auto mismatch = [&](double u) {
     Trial t = draw(p, p.lambda_of(u), method);
-    ++g.trials;
-    g.evaluations += t.evaluations;
-    if (!t.valid) return std::numeric_limits<double>::quiet_NaN();
+    ++sum.constructions;
+    sum.evaluations += t.evaluations;
+    if (!usable(t.status) && failed == Status::ok) {
+      failed = t.status;
+      failed_message = "the positions of the trial curve at Lambda0 = " + format_number(p.lambda_of(u)) + " failed (" +
+                       std::string(to_string(t.status)) + (t.message.empty() ? "" : ": " + t.message) + ")";
+    }
+    if (!t.valid || !usable(t.status)) return std::numeric_limits<double>::quiet_NaN();
     const double f = t.phi - c.target;
     if (std::abs(f) < best_f) {
       best_f = std::abs(f);
@@ -232,13 +364,16 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
   if (std::abs(f0) > o.root.f_atol) {
     // Grow the bracket toward u_max until the sign changes (001: "extended" bisection).
     Bracket b{0.0, 0.0, f0, 0.0};
-    bool found = false;
+    bool found = false, unrepresentable_trial = false;
     double delta = 0.5;
     for (int k = 0; k < o.max_bracket_probes; ++k, delta *= 0.1) {
       const double u = p.u_max * (1.0 - delta);
       const double fu = mismatch(u);
-      ++g.bracket_probes;
-      if (!std::isfinite(fu)) break;  // not representable any closer to the end of the range
+      ++info.bracket_probes;
+      if (!std::isfinite(fu)) {  // not representable (or not integrable) any closer to the end of the range
+        unrepresentable_trial = true;
+        break;
+      }
       if (fu >= 0) {
         b.hi = u;
         b.f_hi = fu;
@@ -249,27 +384,55 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
       b.f_lo = fu;
     }
     if (!found) {
-      g.status = Status::no_solution;
-      g.message = std::string(fn) + ": outside the drawable region (or closer to the end of the Lambda0 range than double " +
-                  "precision resolves): the start angle of the trial curves stays below the control triangle's (" +
-                  format_number(c.target) + " rad) up to Lambda0 = " +
-                  format_number(p.lambda_of(b.lo)) + " (range (0, " +
-                  (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + "))";
+      // φ increases with Λ0: no curve iff the target is at or above φ's limit at the end of the range.
+      const Limit lim = start_angle_limit(p);
+      sum.evaluations += lim.evaluations;
+      if (lim.ok) info.start_angle_limit = lim.angle;
+      const std::string range = "(0, " + (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + ")";
+      if (lim.ok && c.target >= lim.angle + 1e-12 + lim.error) {
+        sum.status = Status::no_solution;
+        sum.message = std::string(fn) + ": outside the drawable region: the start angle of the curves increases with " +
+                      "Lambda0 over " + range + " toward " + format_number(lim.angle) +
+                      " rad, and the control triangle needs " + format_number(c.target) + " rad";
+        return g;
+      }
+      // Not proven outside: a trial curve's positions failed (that status), or the search stalled.
+      const bool positions_failed = unrepresentable_trial && failed != Status::ok;
+      const std::string limit_text =
+          lim.ok ? "the start angle tends to " + format_number(lim.angle) + " rad and the control triangle needs " +
+                       format_number(c.target) + " rad, so a curve exists unless the two are equal within the limit's " +
+                       "accuracy " + format_number(1e-12 + lim.error) + " rad"
+                 : std::string("the limit of the start angle could not be computed");
+      sum.status = positions_failed ? failed : Status::not_converged;
+      if (positions_failed) {
+        sum.message = std::string(fn) + ": " + failed_message + " while looking for a sign change of the start-angle " +
+                      "mismatch; " + limit_text;
+      } else {
+        sum.message = std::string(fn) + ": no sign change of the start-angle mismatch in " +
+                      std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.lo)) +
+                      " of " + range +
+                      (unrepresentable_trial ? " (the next trial curve is not representable in double precision)" : "") +
+                      "; " + limit_text + (lim.ok ? " (Lambda0 closer to the end of the range than the probes resolve)" : "");
+      }
       return g;
     }
     const RootResult root = find_root(o.solver, mismatch, b, o.root);
-    g.iterations = root.iterations;
-    g.residual = root.residual;
+    sum.iterations = root.iterations;
+    info.residual = root.residual;
     if (!usable(root.status) || !std::isfinite(root.root)) {
-      g.status = root.status == Status::ok ? Status::numerical_failure : root.status;
-      g.message = std::string(fn) + ": " + root.message;
+      sum.status = root.status == Status::ok ? Status::numerical_failure : root.status;
+      sum.message = std::string(fn) + ": " + root.message;
+      if (failed != Status::ok) {  // the root finder met a trial without positions: that failure
+        sum.status = failed;
+        sum.message = std::string(fn) + ": " + failed_message + "; " + root.message;
+      }
       return g;
     }
-    g.status = root.status;
-    g.message = root.message;
+    sum.status = root.status;
+    sum.message = root.message;
     u_root = root.root;
   } else {
-    g.residual = f0;
+    info.residual = f0;
   }
 
   Trial t;
@@ -277,188 +440,116 @@ G1Segment solve(const ControlTriangle& tri, double alpha0, double alpha1, double
     t = std::move(best);
   } else {
     t = draw(p, p.lambda_of(u_root), method);
-    ++g.trials;
-    g.evaluations += t.evaluations;
+    ++sum.constructions;
+    sum.evaluations += t.evaluations;
   }
   if (!t.valid) {
-    g.status = Status::numerical_failure;
-    g.message = std::string(fn) + ": the solution curve is not representable in double precision";
+    sum.status = Status::numerical_failure;
+    sum.message = std::string(fn) + ": the solution curve is not representable in double precision";
     return g;
   }
-  if (t.status != Status::ok && g.status == Status::ok) {
-    g.status = Status::tolerance_not_met;
-    g.message = std::string(fn) + ": position quadrature did not meet its tolerance";
+  if (!usable(t.status)) {
+    sum.status = t.status;
+    sum.message = std::string(fn) + ": the positions of the solution curve failed" + (t.message.empty() ? "" : ": " + t.message);
+    return g;
+  }
+  if (t.status != Status::ok && sum.status == Status::ok) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": position quadrature did not meet its tolerance";
   }
 
   // Similarity onto the canonical triangle (001 §2: p0 → b0, end → b2).
-  StandardForm& f = t.form;
-  f.mirrored = c.mirrored;
-  f.swapped = c.swapped;
+  const StandardCurve& f = t.form;
   auto m = [&](Point2 z) { return c.mirrored ? std::conj(z) : z; };
   const Point2 a_scaled = c.chord / (m(f.end) - m(f.start));  // onto the triangle divided by its scale
-  f.scale_rotation = c.scale * a_scaled;
-  f.offset = c.origin - f.scale_rotation * m(f.start);
-  const double k = std::abs(f.scale_rotation);
+  Similarity to_user{c.scale * a_scaled, {}, c.mirrored};
+  to_user.offset = c.origin - to_user.factor * m(f.start);
+  const double k = std::abs(to_user.factor);
 
   const LaCurve c0(alpha0, f.lambda0);
   const double rho_c = std::exp(f.log_rho_joint);
-  SegmentPiece s0;
+  TrianglePiece s0;
   s0.alpha = alpha0;
   s0.lambda = f.lambda0;
   s0.lambda_user = f.lambda0 * std::pow(k, alpha0 - 1.0);
   s0.turning = theta0;
-  s0.length = k * (f.configuration_b ? -c0.s_at_theta(-theta0) : c0.s_at_theta(theta0));
-  s0.rho_small = k * (f.configuration_b ? c0.rho_at_theta(-theta0) : 1.0);
+  s0.rho_small = k * (p.configuration_b ? c0.rho_at_theta(-theta0) : 1.0);
   s0.rho_large = k * rho_c;
-  g.pieces.push_back(s0);
-  double rho_end = rho_c;
+  info.pieces.push_back(s0);
   if (compound) {
-    const LaCurve c1(alpha1, f.lambda0 * std::exp((1.0 - alpha0) * f.log_rho_joint));
-    SegmentPiece s1;
+    const LaCurve c1 = segment1_curve(p, f);
+    TrianglePiece s1;
     s1.alpha = alpha1;
     s1.lambda = f.lambda0 * std::exp((alpha1 - alpha0) * f.log_rho_joint);  // 001 Eq. (3.5)
     s1.lambda_user = s1.lambda * std::pow(k, alpha1 - 1.0);
     s1.turning = theta1;
-    s1.length = k * rho_c * c1.s_at_theta(theta1);
     s1.rho_small = k * rho_c;
-    rho_end = rho_c * c1.rho_at_theta(theta1);
-    s1.rho_large = k * rho_end;
-    g.pieces.push_back(s1);
-    g.joint = f.scale_rotation * m(f.joint) + f.offset;
-    g.rho_joint = k * rho_c;
+    s1.rho_large = k * (rho_c * c1.rho_at_theta(theta1));
+    info.pieces.push_back(s1);
+    info.joint = to_user(f.joint);
+    info.rho_joint = k * rho_c;
   }
-  for (const auto& piece : g.pieces) g.length += piece.length;
-  const double kappa_b0 = c.sign / g.pieces.front().rho_small;  // the curve turns one way throughout
-  const double kappa_b2 = c.sign / (k * rho_end);
-  g.kappa0 = c.swapped ? kappa_b2 : kappa_b0;
-  g.kappa1 = c.swapped ? kappa_b0 : kappa_b2;
 
   // Tangent check in user coordinates: mapped end tangents against the control legs.
   auto mapped_direction = [&](double theta) { return a_scaled * m(std::polar(1.0, theta)); };
-  const double end_tangent = f.configuration_b ? theta1 : theta0 + theta1;
+  const double end_tangent = p.configuration_b ? theta1 : theta0 + theta1;
   const double e0 = std::abs(std::arg(mapped_direction(f.start_tangent) / c.leg0));
   const double e1 = std::abs(std::arg(mapped_direction(end_tangent) / c.leg1));
-  g.tangent_error = std::max(e0, e1);
-  if (!(g.tangent_error <= o.tangent_tolerance) && usable(g.status)) {
-    g.status = Status::tolerance_not_met;
-    g.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(g.tangent_error) + " rad";
+  sum.residuals.angle = std::max(e0, e1);
+  if (!(*sum.residuals.angle <= o.tangent_tolerance) && usable(sum.status)) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(*sum.residuals.angle) + " rad";
   }
-  g.form = f;
+  if (!usable(sum.status)) return g;
   // The standard-form solution is finite; its user-unit image may not be (Λ_user = Λ k^(α−1),
   // ρ = k ρ_std and κ = 1/ρ over- or underflow for extreme α or scale). Such a curve exists
   // but has no double-precision description: report it instead of returning inf.
-  if (usable(g.status)) {
-    const char* bad = unrepresentable(g);
-    if (bad) {
-      g.status = Status::numerical_failure;
-      g.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
-                  " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")";
+  const char* bad = unrepresentable(info, to_user);
+  std::string why;
+  if (!bad) {
+    try {
+      g.curve = place(p, f, to_user, c, tri);
+      if (!std::isfinite(g.curve.kappa_at(0)) || !std::isfinite(g.curve.kappa_at(g.curve.length()))) bad = "end curvature";
+    } catch (const InputError& e) {
+      bad = "segment";
+      why = std::string(": ") + e.what();
     }
+  }
+  if (bad) {
+    g.curve = PlanarCurve();
+    sum.status = Status::numerical_failure;
+    sum.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
+                  " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")" + why;
   }
   return g;
 }
 
-template <class M>
-std::vector<SegmentSample> sample(const G1Segment& g, int n, const M& method) {
-  if (!usable(g.status) || g.pieces.empty()) throw_input_error("sample_segment", "segment", "has no usable curve (status " + std::string(to_string(g.status)) + ")");
-  if (n < 2) throw_input_error("sample_segment", "n", n, "[2, inf)");
-  const StandardForm& f = g.form;
-  const double k = std::abs(f.scale_rotation);
-  const double rho_c = std::exp(f.log_rho_joint);
-  auto m = [&](Point2 z) { return f.mirrored ? std::conj(z) : z; };
-  const double rot = std::arg(f.scale_rotation);
-  const double orientation = f.mirrored ? -1.0 : 1.0;
-  const double sign = g.turning > 0 ? 1.0 : -1.0;
-
-  std::vector<SegmentSample> out;  // canonical order b0 → b2, s from b0
-  const int pieces = static_cast<int>(g.pieces.size());
-  int n0 = n;
-  if (pieces == 2) n0 = std::clamp(static_cast<int>(std::lround(n * g.pieces[0].length / g.length)), 2, std::max(2, n - 1));
-  const int n1 = pieces == 2 ? std::max(2, n - n0 + 1) : 0;
-
-  const LaCurve c0(f.alpha0, f.lambda0);
-  const double s_a = f.configuration_b ? c0.s_at_theta(-f.theta0) : 0.0;
-  const double s_b = f.configuration_b ? 0.0 : c0.s_at_theta(f.theta0);
-  // Uniform in s; when an end lies at the edge of the s domain in double precision (ρ → 0 at
-  // the start of configuration b, ρ → ∞ at an inflection), uniform in θ instead.
-  auto piece_points = [&](const LaCurve& curve, double s_lo, double s_hi, double th_lo, double th_hi, int count) {
-    try {
-      return polyline(curve, Parameter::s, s_lo, s_hi, count, method);
-    } catch (const InputError&) {
-      return polyline(curve, Parameter::theta, th_lo, th_hi, count, method);
-    }
-  };
-  const double th_a = f.configuration_b ? -f.theta0 : 0.0, th_b = f.configuration_b ? 0.0 : f.theta0;
-  for (const auto& r : piece_points(c0, s_a, s_b, th_a, th_b, n0)) {
-    SegmentSample q;
-    q.position = f.scale_rotation * m(r.point.position) + f.offset;
-    q.s = k * (r.point.s - s_a);
-    q.theta = rot + orientation * r.point.theta;
-    q.kappa = sign / (k * r.point.rho);
-    q.piece = 0;
-    out.push_back(q);
-  }
-  if (pieces == 2) {
-    const LaCurve c1(f.alpha1, f.lambda0 * std::exp((1.0 - f.alpha0) * f.log_rho_joint));
-    const double joint_tangent = f.configuration_b ? 0.0 : f.theta0;
-    const double s_joint = out.back().s;
-    const Point2 turn = rho_c * std::polar(1.0, joint_tangent);
-    const auto pts = piece_points(c1, 0.0, c1.s_at_theta(f.theta1), 0.0, f.theta1, n1);
-    for (size_t j = 1; j < pts.size(); ++j) {
-      const auto& r = pts[j];
-      SegmentSample q;
-      q.position = f.scale_rotation * m(f.joint + turn * r.point.position) + f.offset;
-      q.s = s_joint + k * rho_c * r.point.s;
-      q.theta = rot + orientation * (joint_tangent + r.point.theta);
-      q.kappa = sign / (k * rho_c * r.point.rho);
-      q.piece = 1;
-      out.push_back(q);
-    }
-  }
-  if (f.swapped) {  // user order a0 → a2 is the reverse of b0 → b2
-    std::reverse(out.begin(), out.end());
-    const double total = out.front().s;
-    for (auto& q : out) {
-      q.s = total - q.s;
-      q.theta += kPi;
-    }
-  }
-  return out;
+/// Runs the construction with the options' integrator and records the wall time of the call.
+template <class Run>
+TriangleResult timed(const TriangleOptions& o, Run run) {
+  const auto start = std::chrono::steady_clock::now();
+  TriangleResult g = std::visit(run, o.integrator);
+  g.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return g;
 }
 
 }  // namespace
 
-GkTanhSinh default_segment_integrator() { return GkTanhSinh{}; }
-
-void SegmentOptions::validate() const {
+void TriangleOptions::validate() const {
+  std::visit([](const auto& m) { m.validate(); }, integrator);
   root.validate();
-  if (!(min_turning > 0 && min_turning < 0.1)) throw_input_error("SegmentOptions", "min_turning", min_turning, "(0, 0.1)");
+  if (!(min_turning > 0 && min_turning < 0.1)) throw_input_error("TriangleOptions", "min_turning", min_turning, "(0, 0.1)");
   if (max_bracket_probes < 1 || max_bracket_probes > 30)
-    throw_input_error("SegmentOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
-  if (!(tangent_tolerance > 0)) throw_input_error("SegmentOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
+    throw_input_error("TriangleOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
+  if (!(tangent_tolerance > 0)) throw_input_error("TriangleOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
 }
 
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o) {
-  return solve(t, alpha, alpha, 1.0, false, o, default_segment_integrator(), "solve_g1");
+TriangleResult solve_g1(const ControlTriangle& t, double alpha, const TriangleOptions& o) {
+  return timed(o, [&](const auto& m) { return solve(t, alpha, alpha, 1.0, false, o, m, "solve_g1"); });
 }
 
-G1Segment solve_g1(const ControlTriangle& t, double alpha, const SegmentOptions& o, const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return solve(t, alpha, alpha, 1.0, false, o, mm, "solve_g1"); }, method);
-}
-
-G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o) {
-  return solve(t, alpha0, alpha1, r, true, o, default_segment_integrator(), "solve_compound");
-}
-
-G1Segment solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const SegmentOptions& o,
-                         const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return solve(t, alpha0, alpha1, r, true, o, mm, "solve_compound"); }, method);
-}
-
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n) { return sample(g, n, default_segment_integrator()); }
-
-std::vector<SegmentSample> sample_segment(const G1Segment& g, int n, const AnyQuadrature& method) {
-  return std::visit([&](const auto& mm) { return sample(g, n, mm); }, method);
+TriangleResult solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const TriangleOptions& o) {
+  return timed(o, [&](const auto& m) { return solve(t, alpha0, alpha1, r, true, o, m, "solve_compound"); });
 }
 
 }  // namespace lac

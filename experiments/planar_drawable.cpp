@@ -2,8 +2,8 @@
 // work): over the control triangle's shape — its base angles b0 at a0 and b2 at a2, a0 = (0, 0),
 // a2 = (1, 0) (position, orientation and scale do not matter) — and over (α0, α1, r), does a
 // curve exist? Each cell is one solve with the default settings; its status (ok / no_solution /
-// other) goes to results/planar_drawable_grid.csv, a per-panel summary to planar_drawable.{md,csv},
-// heatmaps are drawn by experiments/figures/planar_drawable.py.
+// tolerance_not_met / other) goes to results/planar_drawable_grid.csv, a per-panel summary to
+// planar_drawable.{md,csv}, heatmaps are drawn by experiments/figures/planar_drawable.py.
 //
 // The sweep runs on all cores (TBB parallel_for; every cell is independent and written into its
 // own slot, so the output does not depend on the thread count: check with --threads 1). For a
@@ -68,11 +68,11 @@ Outcome solve_cell(const Cell& c, int grid) {
   const double h = std::sin(b0) * std::sin(b2) / std::sin(b0 + b2);  // apex height on the unit base
   const lac::ControlTriangle t{{0, 0}, {h / std::tan(b0), h}, {1, 0}};
   const Panel& p = kPanels[c.panel];
-  const lac::G1Segment g = p.r < 1 ? lac::solve_compound(t, p.alpha0, p.alpha1, p.r) : lac::solve_g1(t, p.alpha0);
+  const lac::TriangleResult g = p.r < 1 ? lac::solve_compound(t, p.alpha0, p.alpha1, p.r) : lac::solve_g1(t, p.alpha0);
   Outcome o;
-  o.status = std::string(lac::to_string(g.status));
-  o.iterations = g.iterations;
-  o.lambda0 = g.pieces.empty() ? 0 : g.pieces[0].lambda_user;
+  o.status = std::string(lac::to_string(g.summary.status));
+  o.iterations = g.summary.iterations;
+  o.lambda0 = g.info.pieces.empty() ? 0 : g.info.pieces[0].lambda_user;
   return o;
 }
 
@@ -136,10 +136,13 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
       "Control triangle a0 = (0, 0), a2 = (1, 0), apex a1 above the base, base angles b0 (at a0) and b2 (at a2) on a " +
       std::to_string(grid) + " × " + std::to_string(grid) +
       " grid of cell centres over (0, π)² with b0 + b2 < π (the turning is b0 + b2). One solve per cell with the "
-      "default settings (TOMS 748, Gauss–Kronrod / tanh-sinh positions); \"no_solution\" means the similar-triangle "
-      "search found no sign change over the Λ0 range it can resolve in double precision (outside the drawable "
-      "region), \"tolerance_not_met\" a curve whose end tangents miss the legs by more than 1e-11 rad (usable, "
-      "found in extreme shapes where ρ varies by many orders of magnitude), \"other\" any other status. By 001 §4 segment 0 (α0) is always put at the end with the shorter leg (the larger base "
+      "default settings (TOMS 748, Gauss–Kronrod / tanh-sinh positions); \"no_solution\" means the triangle is "
+      "proven outside the drawable region (the start angle of the trial curves increases with Λ0, and the "
+      "triangle's angle at the short-leg end is at or above its limit at the end of the Λ0 range), "
+      "\"tolerance_not_met\" a curve whose end tangents miss the legs by more than 1e-11 rad (usable, "
+      "found in extreme shapes where ρ varies by many orders of magnitude), \"other\" any other status "
+      "(not_converged: a curve exists, but its Λ0 lies closer to the end of the range than the search resolves "
+      "in double precision). By 001 §4 segment 0 (α0) is always put at the end with the shorter leg (the larger base "
       "angle), so every map is symmetric in b0 ↔ b2; the diagonal (isosceles triangles) is the circular arc, Λ0 = 0. Heatmaps: results/figures/planar_drawable.png. Wall time " +
       lac::io::fmt(seconds, 3) + " s on " + std::to_string(threads) +
       " threads (shared machine; a timing only for planning larger grids).";
@@ -147,8 +150,8 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
       "001 leaves the drawable regions as future work, so there is nothing to compare with. For monotonic "
       "0 < α ≤ 1 the length is unbounded as Λ → Λmax, the start angle tends to the turning, and every triangle is "
       "drawable. At α = 0 the length grows only like log(1/(Λmax − Λ)), so for the most skewed triangles the "
-      "needed Λ0 lies closer to Λmax than double precision resolves (no_solution here) or the tangents lose "
-      "accuracy (tolerance_not_met). α < 0 (finite length up to the inflection) and α > 1 (ρ → 0 at the start) "
+      "needed Λ0 lies closer to Λmax than double precision resolves (not_converged, counted as other status) "
+      "or the tangents lose accuracy (tolerance_not_met). α < 0 (finite length up to the inflection) and α > 1 (ρ → 0 at the start) "
       "lose the triangles whose start angle is too close to the turning, i.e. one leg much shorter than the "
       "other. A finer grid: --grid 200 (or split it with --shard K/N and --merge N).";
   lac::io::write_result_table(out, "planar_drawable", doc, t);

@@ -6,6 +6,8 @@
 // beside them. Writes results/planar_figures.{md,csv} (parameters found) and
 // results/planar_figures_points.csv (samples) for experiments/figures/planar_figures.py.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -54,23 +56,41 @@ int main(int argc, char** argv) {
   for (const Spec& s : kSpecs) {
     const bool compound = s.r < 1;
     lac::io::Stopwatch clock;
-    const lac::G1Segment g = compound ? lac::solve_compound(tri, s.alpha0, s.alpha1, s.r) : lac::solve_g1(tri, s.alpha0);
+    const lac::TriangleResult g = compound ? lac::solve_compound(tri, s.alpha0, s.alpha1, s.r) : lac::solve_g1(tri, s.alpha0);
     const double us = 1e6 * clock.seconds();
     const std::string a1 = compound ? lac::io::fmt(s.alpha1) : "(monotonic)";
-    if (g.status != lac::Status::ok) {
-      t.add_row({s.figure, lac::io::fmt(s.alpha0), a1, compound ? lac::io::fmt(s.r) : "", std::string(lac::to_string(g.status)),
-                 "", "", "", "", "", "", "", "", std::to_string(g.iterations), lac::io::fmt(us, 3)});
+    if (g.summary.status != lac::Status::ok) {
+      t.add_row({s.figure, lac::io::fmt(s.alpha0), a1, compound ? lac::io::fmt(s.r) : "",
+                 std::string(lac::to_string(g.summary.status)), "", "", "", "", "", "", "", "",
+                 std::to_string(g.summary.iterations), lac::io::fmt(us, 3)});
       continue;
     }
+    const lac::PlanarCurve& curve = g.curve;
+    const lac::TriangleInfo& info = g.info;
+    const size_t pieces = curve.segments().size();
+    auto piece_of = [&](size_t k) { return info.segment0_at_a0 ? k : pieces - 1 - k; };  // curve segment k
+    const double piece0_length = curve.segments()[piece_of(0)].length();
     t.add_row({s.figure, lac::io::fmt(s.alpha0), a1, compound ? lac::io::fmt(s.r) : "", "ok",
-               lac::io::fmt(g.pieces[0].lambda, 6), compound ? lac::io::fmt(g.pieces[1].lambda, 6) : "",
-               compound ? lac::io::fmt(g.rho_joint, 6) : "", compound ? lac::io::fmt(g.pieces[0].length / g.length, 3) : "",
-               lac::io::fmt(g.length, 8), lac::io::fmt(g.kappa0, 6), lac::io::fmt(g.kappa1, 6), lac::io::sci(g.tangent_error, 2),
-               std::to_string(g.iterations), lac::io::fmt(us, 3)});
-    for (const auto& q : lac::sample_segment(g, samples))
-      pts << s.figure << ',' << s.alpha0 << ',' << (compound ? s.alpha1 : s.alpha0) << ',' << (compound ? s.r : 1.0) << ','
-          << q.piece << ',' << q.s << ',' << q.position.real() << ',' << q.position.imag() << ',' << q.theta << ','
-          << q.kappa << '\n';
+               lac::io::fmt(info.pieces[0].lambda, 6), compound ? lac::io::fmt(info.pieces[1].lambda, 6) : "",
+               compound ? lac::io::fmt(info.rho_joint, 6) : "", compound ? lac::io::fmt(piece0_length / curve.length(), 3) : "",
+               lac::io::fmt(curve.length(), 8), lac::io::fmt(curve.kappa_at(0), 6), lac::io::fmt(curve.kappa_at(curve.length()), 6),
+               lac::io::sci(*g.summary.residuals.angle, 2), std::to_string(g.summary.iterations), lac::io::fmt(us, 3)});
+    // Each segment uniform in s, about `samples` points in all shared by length, the joint once
+    // (the last point of the first segment), positions by the construction's default method.
+    const int n0 = pieces == 2 ? std::clamp(static_cast<int>(std::lround(samples * piece0_length / curve.length())), 2,
+                                            std::max(2, samples - 1))
+                               : samples;
+    for (size_t k = 0; k < pieces; ++k) {
+      const int count = piece_of(k) == 0 ? n0 : std::max(2, samples - n0 + 1);
+      const auto segment_points =
+          lac::polyline(curve, curve.segment_start(k), curve.segment_start(k + 1), count, lac::GkTanhSinh{});
+      for (size_t j = k == 0 ? 0 : 1; j < segment_points.size(); ++j) {
+        const lac::CurvePoint& q = segment_points[j].point;
+        pts << s.figure << ',' << s.alpha0 << ',' << (compound ? s.alpha1 : s.alpha0) << ',' << (compound ? s.r : 1.0) << ','
+            << piece_of(k) << ',' << q.s << ',' << q.position.real() << ',' << q.position.imag() << ',' << q.theta << ','
+            << q.kappa << '\n';
+      }
+    }
   }
   lac::io::ResultDoc doc;
   doc.title = "001 Figs. 7–8: compound-rhythm LA curves on one control triangle";

@@ -23,14 +23,14 @@ struct Case {
   double lambda0 = 0;  // bisection's
 };
 
-lac::G1Segment solve(const Case& c, bool compound, const lac::SegmentOptions& o) {
+lac::TriangleResult solve(const Case& c, bool compound, const lac::TriangleOptions& o) {
   return compound ? lac::solve_compound(c.t, c.alpha0, c.alpha1, c.r, o) : lac::solve_g1(c.t, c.alpha0, o);
 }
 
 std::vector<Case> drawable_cases(bool compound, int n, unsigned seed, int* tried) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0, 1);
-  lac::SegmentOptions paper;
+  lac::TriangleOptions paper;
   paper.solver = lac::RootMethod::bisection;
   std::vector<Case> out;
   *tried = 0;
@@ -44,9 +44,9 @@ std::vector<Case> drawable_cases(bool compound, int n, unsigned seed, int* tried
     const lac::Point2 apex = mirror ? lac::Point2{h / std::tan(b0), -h} : lac::Point2{h / std::tan(b0), h};
     Case c{{lac::Point2{3, -1}, lac::Point2{3, -1} + apex * rot, lac::Point2{3, -1} + rot}, -2 + 5 * u(rng), -2 + 5 * u(rng),
            0.1 + 0.8 * u(rng)};
-    const lac::G1Segment g = solve(c, compound, paper);
-    if (g.status != lac::Status::ok) continue;
-    c.lambda0 = g.pieces[0].lambda;
+    const lac::TriangleResult g = solve(c, compound, paper);
+    if (g.summary.status != lac::Status::ok) continue;
+    c.lambda0 = g.info.pieces[0].lambda;
     out.push_back(c);
   }
   return out;
@@ -66,8 +66,6 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(out);
   const std::string cmd = lac::io::command_line(argc, argv);
 
-  const lac::RootMethod solvers[] = {lac::RootMethod::bisection, lac::RootMethod::secant, lac::RootMethod::toms748,
-                                     lac::RootMethod::ceres};
   lac::io::Table t;
   t.columns = {"kind", "solver", "cases", "success", "median µs", "p10 µs", "p90 µs", "time / bisection (median)",
                "median iterations", "median trial curves", "median integrand evaluations", "max rel. Λ0 difference"};
@@ -78,23 +76,25 @@ int main(int argc, char** argv) {
     drawn += std::string(compound ? "compound" : "monotonic") + ": " + std::to_string(set.size()) + " drawable of " +
              std::to_string(tried) + " drawn; ";
     double bisection_median = 0;
-    for (lac::RootMethod m : solvers) {
-      lac::SegmentOptions o;
+    for (const lac::RootMethodInfo& method : lac::root_methods()) {  // bisection first: the baseline
+      const lac::RootMethod m = method.method;
+      lac::TriangleOptions o;
       o.solver = m;
       std::vector<double> seconds, iterations, trials, evaluations;
       int success = 0;
       double max_diff = 0;
       for (const Case& c : set) {
         lac::io::Stopwatch clock;
-        const lac::G1Segment g = solve(c, compound, o);
+        const lac::TriangleResult g = solve(c, compound, o);
         seconds.push_back(clock.seconds());
-        iterations.push_back(g.iterations);
-        trials.push_back(static_cast<double>(g.trials));
-        evaluations.push_back(static_cast<double>(g.evaluations));
-        if (g.status != lac::Status::ok) continue;
-        const double diff = std::abs(g.pieces[0].lambda - c.lambda0) / std::max(c.lambda0, 1e-300);
-        max_diff = std::max(max_diff, c.lambda0 == 0 ? g.pieces[0].lambda : diff);
-        success += diff <= 1e-9 || (c.lambda0 == 0 && g.pieces[0].lambda == 0);
+        iterations.push_back(g.summary.iterations);
+        trials.push_back(static_cast<double>(g.summary.constructions));
+        evaluations.push_back(static_cast<double>(g.summary.evaluations));
+        if (g.summary.status != lac::Status::ok) continue;
+        const double lambda0 = g.info.pieces[0].lambda;
+        const double diff = std::abs(lambda0 - c.lambda0) / std::max(c.lambda0, 1e-300);
+        max_diff = std::max(max_diff, c.lambda0 == 0 ? lambda0 : diff);
+        success += diff <= 1e-9 || (c.lambda0 == 0 && lambda0 == 0);
       }
       const lac::io::TimingStats ts = lac::io::summarize(seconds);
       if (m == lac::RootMethod::bisection) bisection_median = ts.median;

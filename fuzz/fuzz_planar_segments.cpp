@@ -1,8 +1,10 @@
 // libFuzzer target: planar G1 and compound-rhythm segments (constructions/triangle_g1) from arbitrary
-// control triangles and slopes, with every root finder, and sample_segment of usable results;
-// and the 1-D root finders themselves on a cubic with arbitrary coefficients and bracket.
+// control triangles and slopes, with every root finder and every integrator, and samples of usable
+// results (PlanarCurve::sample); and the 1-D root finders themselves on a cubic with arbitrary
+// coefficients and bracket.
 // Properties: see fuzz/fuzz_support.hpp.
 #include <string>
+#include <variant>
 
 #include "fuzz/fuzz_support.hpp"
 #include "lac/constructions/triangle_g1.hpp"
@@ -14,30 +16,32 @@ using lac::fuzz::show;
 
 namespace {
 
-void check_segment(const std::string& what, const G1Segment& g) {
-  if (!usable(g.status)) return;
-  require_finite_result(what + " length", g.length);
-  require_finite_result(what + " kappa0", g.kappa0);
-  require_finite_result(what + " kappa1", g.kappa1);
-  require_finite_result(what + " turning", g.turning);
-  require_finite_result(what + " tangent_error", g.tangent_error);
-  require_finite_result(what + " joint", g.joint);
-  require_finite_result(what + " rho_joint", g.rho_joint);
-  for (const auto& p : g.pieces) {
+void check_segment(const std::string& what, const TriangleResult& g) {
+  if (!g.usable()) return;
+  const PlanarCurve& c = g.curve;
+  require_finite_result(what + " length", c.length());
+  require_finite_result(what + " kappa0", c.kappa_at(0));
+  require_finite_result(what + " kappa1", c.kappa_at(c.length()));
+  require_finite_result(what + " turning", g.info.turning);
+  require_finite_result(what + " tangent error", g.summary.residuals.angle.value_or(NAN));
+  require_finite_result(what + " joint", g.info.joint);
+  require_finite_result(what + " rho_joint", g.info.rho_joint);
+  for (const auto& p : g.info.pieces) {
     require_finite_result(what + " piece lambda", p.lambda);
     require_finite_result(what + " piece lambda_user", p.lambda_user);
-    require_finite_result(what + " piece length", p.length);
     require_finite_result(what + " piece rho_small", p.rho_small);
     lac::fuzz::require_not_nan(what + " piece rho_large", p.rho_large);  // +inf: straight end (α ≤ 0 limit)
   }
+  for (const auto& s : c.segments()) require_finite_result(what + " segment length", s.length());
 }
 
-void check_samples(const std::string& what, const std::vector<SegmentSample>& pts) {
+void check_samples(const std::string& what, const std::vector<PositionResult>& pts) {
   for (const auto& q : pts) {
-    require_finite_result(what + " position", q.position);
-    require_finite_result(what + " s", q.s);
-    require_finite_result(what + " theta", q.theta);
-    require_finite_result(what + " kappa", q.kappa);
+    if (!usable(q.status)) continue;  // holds no position of its own (curves/curve.hpp)
+    require_finite_result(what + " position", q.point.position);
+    require_finite_result(what + " s", q.point.s);
+    require_finite_result(what + " theta", q.point.theta);
+    require_finite_result(what + " kappa", q.point.kappa);
   }
 }
 
@@ -70,12 +74,22 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   t.a1 = {in.number(), in.number()};
   t.a2 = {in.number(), in.number()};
   const double alpha0 = in.number(), alpha1 = in.number(), r = in.number();
-  SegmentOptions o;
+  TriangleOptions o;
   o.solver = solver;
+  // The mode's upper bits pick the integrator: 0 the construction's default, k the k-th registered method.
+  const size_t integrator = (mode / 4u) % (quadrature_methods().size() + 1);
+  if (integrator > 0) o.integrator = make_quadrature(quadrature_methods()[integrator - 1].name);
+  // Budgets per trial curve (a search draws up to ~100): rk4 (h = 10^-3) would otherwise run up
+  // to 5·10^6 steps on each, and gauss-kronrod (1e-14) up to 8·10^5 evaluations on the pieces next
+  // to ρ → 0 or ∞ of skewed triangles (~1 s per solve without the sanitizers, as before the
+  // integrator became an option): the fuzzer is after wrong answers, not these known costs.
+  if (auto* rk4 = std::get_if<Rk4>(&o.integrator)) rk4->max_steps = 20'000;
+  if (auto* rk45 = std::get_if<Rk45>(&o.integrator)) rk45->max_steps = 2'500;
+  if (auto* gk = std::get_if<GaussKronrod>(&o.integrator)) gk->max_intervals = 1'000;
   const std::string triangle = "(" + show(t.a0.real()) + "," + show(t.a0.imag()) + " " + show(t.a1.real()) + "," +
                                show(t.a1.imag()) + " " + show(t.a2.real()) + "," + show(t.a2.imag()) + ") " +
-                               std::string(to_string(solver));
-  G1Segment g;
+                               std::string(to_string(solver)) + " " + describe(o.integrator);
+  TriangleResult g;
   std::string what;
   bool ok = false;
   if (mode % 4 == 0 || mode % 4 == 2) {
@@ -87,9 +101,9 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   }
   if (!ok) return 0;
   check_segment(what, g);
-  if (usable(g.status)) {
+  if (g.usable()) {
     const int n = in.int_in(-1, 64);
-    guarded(what + " sample_segment " + std::to_string(n), [&] { check_samples(what, sample_segment(g, n)); });
+    guarded(what + " sample " + std::to_string(n), [&] { check_samples(what, g.curve.sample(n, GkTanhSinh{})); });
   }
   return 0;
 }

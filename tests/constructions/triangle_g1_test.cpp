@@ -5,38 +5,72 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "lac/constructions/triangle_g1.hpp"
+#include "lac/curves/planar/la_curve.hpp"
 #include "tests/support/reference_csv.hpp"
 
 namespace lac {
 namespace {
 
 // Tolerances (relative unless stated), in one place.
-constexpr double kReferenceTol = 1e-11;     // Λ, length, κ, ρc against the mpmath table
+constexpr double kReferenceTol = 1e-11;     // Λ, length, κ, ρc against the mpmath table (default integrator)
 constexpr double kEndpointTol = 1e-12;      // end points, relative to the chord |a2 − a0|
 constexpr double kTangentTol = 1e-12;       // end tangent directions (rad)
 constexpr double kJointTol = 1e-10;         // ρ and dρ/ds at the joint (closed forms, G3)
-constexpr double kJointNumericTol = 1e-6;   // the same from finite differences of the samples
+constexpr double kJointNumericTol = 1e-6;   // dρ/ds from one-sided differences of ρ(s) on both sides
 constexpr double kLcgSlopeTol = 1e-4;       // LCG slope fitted to curvature recomputed from positions
 constexpr double kSameCurveTol = 1e-11;     // α0 = α1 versus the monotonic segment
 constexpr double kLimitTol = 1e-6;          // r = 1e-9 and r = 1 − 1e-9 versus the monotonic segment
 
-constexpr RootMethod kSolvers[] = {RootMethod::bisection, RootMethod::secant, RootMethod::toms748, RootMethod::ceres};
+/// Against the mpmath table with each registered integrator at its default settings: the
+/// search's accuracy follows the positions' (rk45, igf: tolerance 1e-12; rk4: fixed step 1e-3;
+/// gauss-kronrod: 1e-14; gauss-legendre: 20 points per radian).
+const std::map<std::string, double> kIntegratorTol = {{"rk4", 1e-11},           {"rk45", 1e-11},
+                                                      {"gauss-kronrod", 1e-12}, {"gauss-legendre", 1e-12},
+                                                      {"gk-tanh-sinh", kReferenceTol}, {"igf", 1e-11}};
 
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
-
-SegmentOptions with_solver(RootMethod m) {
-  SegmentOptions o;
-  o.solver = m;
-  return o;
-}
 
 std::string cell(const test::CsvTable& t, size_t row, const std::string& name) {
   const size_t c = t.column(name);
   return c < t.rows[row].size() ? t.rows[row][c] : std::string();
+}
+
+double kappa_start(const TriangleResult& g) { return g.curve.kappa_at(0); }
+double kappa_end(const TriangleResult& g) { return g.curve.kappa_at(g.curve.length()); }
+
+/// Largest relative error of one row of planar_segments.csv solved with `o`, and where.
+std::pair<double, std::string> reference_error(const test::CsvTable& t, size_t i, const TriangleOptions& o,
+                                               const std::string& where) {
+  const ControlTriangle tri{{t.number(i, "x0"), t.number(i, "y0")}, {t.number(i, "x1"), t.number(i, "y1")},
+                            {t.number(i, "x2"), t.number(i, "y2")}};
+  const bool compound = cell(t, i, "kind") == "compound";
+  const TriangleResult g = compound ? solve_compound(tri, t.number(i, "alpha0"), t.number(i, "alpha1"), t.number(i, "r"), o)
+                                    : solve_g1(tri, t.number(i, "alpha0"), o);
+  EXPECT_TRUE(g.usable()) << where << ": " << g.summary.message;
+  if (!g.usable()) return {INFINITY, where};
+  EXPECT_EQ(g.summary.solver, to_string(o.solver)) << where;
+  EXPECT_EQ(g.summary.integrator, name_of(o.integrator)) << where;
+  std::vector<std::pair<std::string, double>> errors = {{"lambda0", rel(g.info.pieces[0].lambda, t.number(i, "lambda0"))},
+                                                        {"length", rel(g.curve.length(), t.number(i, "length"))},
+                                                        {"kappa0", rel(kappa_start(g), t.number(i, "kappa0"))},
+                                                        {"kappa1", rel(kappa_end(g), t.number(i, "kappa1"))}};
+  if (compound) {
+    errors.push_back({"lambda1", rel(g.info.pieces[1].lambda, t.number(i, "lambda1"))});
+    errors.push_back({"rho_joint", rel(g.info.rho_joint, t.number(i, "rho_joint"))});
+  }
+  std::pair<double, std::string> worst{0, where};
+  for (const auto& [what, e] : errors)
+    if (e > worst.first) worst = {e, where + " " + what};
+  return worst;
 }
 
 TEST(PlanarSegments, MatchesMpmathReferenceWithEverySolver) {
@@ -45,34 +79,109 @@ TEST(PlanarSegments, MatchesMpmathReferenceWithEverySolver) {
   double worst = 0;
   std::string worst_where;
   for (size_t i = 0; i < t.rows.size(); ++i) {
-    const ControlTriangle tri{{t.number(i, "x0"), t.number(i, "y0")}, {t.number(i, "x1"), t.number(i, "y1")},
-                              {t.number(i, "x2"), t.number(i, "y2")}};
-    const bool compound = cell(t, i, "kind") == "compound";
-    for (RootMethod m : kSolvers) {
-      const G1Segment g = compound ? solve_compound(tri, t.number(i, "alpha0"), t.number(i, "alpha1"), t.number(i, "r"), with_solver(m))
-                                   : solve_g1(tri, t.number(i, "alpha0"), with_solver(m));
-      const std::string where = cell(t, i, "name") + " / " + std::string(to_string(m));
-      ASSERT_EQ(g.status, Status::ok) << where << ": " << g.message;
-      std::vector<std::pair<std::string, double>> errors = {
-          {"lambda0", rel(g.pieces[0].lambda, t.number(i, "lambda0"))},
-          {"length", rel(g.length, t.number(i, "length"))},
-          {"kappa0", rel(g.kappa0, t.number(i, "kappa0"))},
-          {"kappa1", rel(g.kappa1, t.number(i, "kappa1"))}};
-      if (compound) {
-        errors.push_back({"lambda1", rel(g.pieces[1].lambda, t.number(i, "lambda1"))});
-        errors.push_back({"rho_joint", rel(g.rho_joint, t.number(i, "rho_joint"))});
-      }
-      for (const auto& [what, e] : errors) {
-        EXPECT_LE(e, kReferenceTol) << where << " " << what;
-        if (e > worst) {
-          worst = e;
-          worst_where = where + " " + what;
-        }
-      }
+    for (const RootMethodInfo& m : root_methods()) {
+      TriangleOptions o;
+      o.solver = m.method;
+      const auto [e, where] = reference_error(t, i, o, cell(t, i, "name") + " / " + std::string(m.name));
+      EXPECT_LE(e, kReferenceTol) << where;
+      if (e > worst) std::tie(worst, worst_where) = std::tie(e, where);
     }
   }
   std::printf("  worst relative error against planar_segments.csv: %.2e (%s)\n", worst, worst_where.c_str());
 }
+
+// Every registered integrator, both constructions (the table's monotonic and compound rows).
+TEST(PlanarSegments, IntegratorChoiceAgrees) {
+  const auto t = test::read_reference_csv("planar_segments.csv");
+  ASSERT_EQ(kIntegratorTol.size(), quadrature_methods().size());
+  for (const MethodInfo& m : quadrature_methods()) {
+    TriangleOptions o;
+    o.integrator = make_quadrature(m.name);
+    const double tol = kIntegratorTol.at(std::string(m.name));
+    double worst = 0;
+    std::string worst_where;
+    for (size_t i = 0; i < t.rows.size(); ++i) {
+      const auto [e, where] = reference_error(t, i, o, cell(t, i, "name") + " / " + std::string(m.name));
+      EXPECT_LE(e, tol) << where;
+      if (e > worst) std::tie(worst, worst_where) = std::tie(e, where);
+    }
+    std::printf("  %-15s worst relative error %.2e (%s)\n", std::string(m.name).c_str(), worst, worst_where.c_str());
+  }
+  // Against the default integrator on one compound shape.
+  const ControlTriangle tri{{0, 0}, {1, 0}, {2, 1}};
+  const TriangleResult ref = solve_compound(tri, -1, 1.5, 0.4);
+  for (const char* name : {"gauss-kronrod", "rk45"}) {
+    TriangleOptions o;
+    o.integrator = make_quadrature(name);
+    const TriangleResult g = solve_compound(tri, -1, 1.5, 0.4, o);
+    ASSERT_TRUE(g.usable()) << name << " " << g.summary.message;
+    EXPECT_LE(rel(g.curve.length(), ref.curve.length()), 1e-10) << name;
+    EXPECT_LE(rel(g.info.pieces[0].lambda, ref.info.pieces[0].lambda), 1e-9) << name;
+  }
+}
+
+// Every construction × integrator × root solver of the registries: the table's rows of that
+// construction against the mpmath reference at the integrator's tolerance, and against the
+// default (gk-tanh-sinh, toms748) solve of the same row at that tolerance.
+struct Combination {
+  bool compound;
+  std::string integrator, solver;
+};
+
+void PrintTo(const Combination& c, std::ostream* os) {
+  *os << (c.compound ? "compound" : "g1") << " / " << c.integrator << " / " << c.solver;
+}
+
+std::vector<Combination> all_combinations() {
+  std::vector<Combination> out;
+  for (bool compound : {false, true})
+    for (const MethodInfo& q : quadrature_methods())
+      for (const RootMethodInfo& r : root_methods()) out.push_back({compound, std::string(q.name), std::string(r.name)});
+  return out;
+}
+
+class EveryIntegratorAndSolver : public ::testing::TestWithParam<Combination> {};
+
+TEST_P(EveryIntegratorAndSolver, AgreesWithTheReferenceAndTheDefault) {
+  const Combination& c = GetParam();
+  const auto t = test::read_reference_csv("planar_segments.csv");
+  TriangleOptions o;
+  o.integrator = make_quadrature(c.integrator);
+  o.solver = parse_root_method(c.solver);
+  const double tol = kIntegratorTol.at(c.integrator);
+  int rows = 0;
+  for (size_t i = 0; i < t.rows.size(); ++i) {
+    if ((cell(t, i, "kind") == "compound") != c.compound) continue;
+    ++rows;
+    const std::string where = cell(t, i, "name") + " / " + c.integrator + " / " + c.solver;
+    const auto [e, worst] = reference_error(t, i, o, where);
+    EXPECT_LE(e, tol) << worst;
+    const ControlTriangle tri{{t.number(i, "x0"), t.number(i, "y0")}, {t.number(i, "x1"), t.number(i, "y1")},
+                              {t.number(i, "x2"), t.number(i, "y2")}};
+    auto solve = [&](const TriangleOptions& opt) {
+      return c.compound ? solve_compound(tri, t.number(i, "alpha0"), t.number(i, "alpha1"), t.number(i, "r"), opt)
+                        : solve_g1(tri, t.number(i, "alpha0"), opt);
+    };
+    const TriangleResult g = solve(o), ref = solve(TriangleOptions{});
+    ASSERT_TRUE(g.usable() && ref.usable()) << where;
+    EXPECT_LE(*g.summary.residuals.angle, o.tangent_tolerance) << where;
+    EXPECT_LE(rel(g.curve.length(), ref.curve.length()), tol) << where;
+    EXPECT_LE(rel(g.info.pieces[0].lambda_user, ref.info.pieces[0].lambda_user), tol) << where;
+    EXPECT_LE(rel(kappa_start(g), kappa_start(ref)), tol) << where;
+    EXPECT_LE(rel(kappa_end(g), kappa_end(ref)), tol) << where;
+    ASSERT_EQ(g.curve.segments().size(), c.compound ? 2u : 1u) << where;
+    if (c.compound) EXPECT_LE(std::abs(g.info.joint - ref.info.joint), tol * g.curve.length()) << where;
+  }
+  EXPECT_GE(rows, 8);
+}
+
+INSTANTIATE_TEST_SUITE_P(PlanarSegments, EveryIntegratorAndSolver, ::testing::ValuesIn(all_combinations()),
+                         [](const ::testing::TestParamInfo<Combination>& info) {
+                           std::string name = std::string(info.param.compound ? "compound_" : "g1_") + info.param.integrator +
+                                              "_" + info.param.solver;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 /// Random triangles of every orientation and scale, both turning directions, both leg orders.
 std::vector<ControlTriangle> random_triangles(int n, unsigned seed) {
@@ -107,33 +216,46 @@ TEST(PlanarSegments, EndPointsAndTangentsMetOnRandomTriangles) {
     const auto& t = tris[i];
     for (double a : alphas) {
       const bool compound = i % 2 == 1;
-      const G1Segment g = compound ? solve_compound(t, a, 1.0 - 0.7 * a, 0.35) : solve_g1(t, a);
-      if (g.status == Status::no_solution) {
+      const TriangleResult g = compound ? solve_compound(t, a, 1.0 - 0.7 * a, 0.35) : solve_g1(t, a);
+      if (g.summary.status == Status::no_solution) {
         ++no_curve;
-        EXPECT_FALSE(g.message.empty());
+        EXPECT_FALSE(g.summary.message.empty());
         continue;
       }
-      ASSERT_EQ(g.status, Status::ok) << g.message;
+      ASSERT_EQ(g.summary.status, Status::ok) << g.summary.message;
       ++solved;
-      const auto pts = sample_segment(g, 40);
+      const PlanarCurve& c = g.curve;
+      const auto pts = c.sample(40, GkTanhSinh{});
+      ASSERT_EQ(pts.back().status, Status::ok) << pts.back().message;
+      const CurvePoint &first = pts.front().point, &last = pts.back().point;
+      // The end point by one integration from the last segment's start (the samples add up their
+      // steps in user coordinates: rounding of |a_i| ≤ 50 on chords down to 1e-3).
+      const PositionResult end = position_at(c, c.length(), GkTanhSinh{});
+      ASSERT_EQ(end.status, Status::ok) << end.message;
       const double chord = std::abs(t.a2 - t.a0);
-      worst_point = std::max({worst_point, std::abs(pts.front().position - t.a0) / chord,
-                              std::abs(pts.back().position - t.a2) / chord});
-      const double e0 = std::abs(std::arg(std::polar(1.0, pts.front().theta) / (t.a1 - t.a0)));
-      const double e1 = std::abs(std::arg(std::polar(1.0, pts.back().theta) / (t.a2 - t.a1)));
-      worst_tangent = std::max({worst_tangent, e0, e1, g.tangent_error});
-      // Signed curvature: the sign of the triangle's turning, and the sample ends agree with kappa0/kappa1.
-      // The samples take ρ(s), kappa0/kappa1 take ρ(θ): near the end of a θ domain (α < 1, ρ large)
-      // they differ by the conditioning d log ρ/dθ = Λ ρ^(1−α) (scale-invariant: user units) times
-      // a few ulps of θ, e.g. 1.7e-11 at Λρ^(1−α) = 3.7e4.
+      worst_point = std::max({worst_point, std::abs(first.position - t.a0) / chord, std::abs(end.point.position - t.a2) / chord});
+      const double e0 = std::abs(std::arg(std::polar(1.0, first.theta) / (t.a1 - t.a0)));
+      const double e1 = std::abs(std::arg(std::polar(1.0, last.theta) / (t.a2 - t.a1)));
+      worst_tangent = std::max({worst_tangent, e0, e1, *g.summary.residuals.angle});
+      // Signed curvature: the sign of the triangle's turning, and the sample ends agree with the
+      // pieces' ρ at a0 and a2. The segments take κ(s), the pieces' ρ is ρ(θ): near the end of a θ
+      // domain (α < 1, ρ large) they differ by the conditioning d log ρ/dθ = Λ ρ^(1−α)
+      // (scale-invariant: user units) times a few ulps of θ, e.g. 1.7e-11 at Λρ^(1−α) = 3.7e4.
+      const double sign = g.info.turning > 0 ? 1.0 : -1.0;
       auto end_tol = [&](bool at_b2) {
-        const SegmentPiece& p = at_b2 ? g.pieces.back() : g.pieces.front();
+        const TrianglePiece& p = at_b2 ? g.info.pieces.back() : g.info.pieces.front();
         return 1e-12 + 1e-14 * p.lambda_user * std::pow(at_b2 ? p.rho_large : p.rho_small, 1 - p.alpha);
       };
-      EXPECT_NEAR(pts.front().kappa, g.kappa0, end_tol(!g.segment0_at_a0) * std::abs(g.kappa0));
-      EXPECT_NEAR(pts.back().kappa, g.kappa1, end_tol(g.segment0_at_a0) * std::abs(g.kappa1));
-      EXPECT_GT(g.kappa0 * g.turning, 0);
-      EXPECT_NEAR(pts.back().s, g.length, 1e-12 * g.length);
+      auto end_kappa = [&](bool at_b2) {
+        return sign / (at_b2 ? g.info.pieces.back().rho_large : g.info.pieces.front().rho_small);
+      };
+      const bool a0_is_b2 = !g.info.segment0_at_a0;
+      const double kappa0 = end_kappa(a0_is_b2), kappa1 = end_kappa(!a0_is_b2);
+      EXPECT_NEAR(first.kappa, kappa0, end_tol(a0_is_b2) * std::abs(kappa0));
+      EXPECT_NEAR(last.kappa, kappa1, end_tol(!a0_is_b2) * std::abs(kappa1));
+      EXPECT_EQ(first.kappa, kappa_start(g));
+      EXPECT_GT(kappa_start(g) * g.info.turning, 0);
+      EXPECT_NEAR(last.s, c.length(), 1e-12 * c.length());
     }
   }
   std::printf("  %d solved, %d outside the drawable region; worst end point %.2e (of chord), worst tangent %.2e rad\n", solved,
@@ -145,8 +267,8 @@ TEST(PlanarSegments, EndPointsAndTangentsMetOnRandomTriangles) {
 
 TEST(PlanarSegments, MirroredSwappedRotatedScaledGiveTheSameShape) {
   const ControlTriangle base{{0, 0}, {1, 0}, {2, 1}};
-  const G1Segment ref = solve_compound(base, -1, 1.5, 0.4);
-  ASSERT_EQ(ref.status, Status::ok);
+  const TriangleResult ref = solve_compound(base, -1, 1.5, 0.4);
+  ASSERT_EQ(ref.summary.status, Status::ok);
   const double k = 37.5;
   const Point2 rot = std::polar(k, 2.1);
   const Point2 shift{-3, 8};
@@ -164,15 +286,18 @@ TEST(PlanarSegments, MirroredSwappedRotatedScaledGiveTheSameShape) {
       {"swapped+mirrored+rotated", {rs(std::conj(base.a2)), rs(std::conj(base.a1)), rs(std::conj(base.a0))}, 1, true},
   };
   for (const auto& v : variants) {
-    const G1Segment g = solve_compound(v.t, -1, 1.5, 0.4);
-    ASSERT_EQ(g.status, Status::ok) << v.name;
+    const TriangleResult g = solve_compound(v.t, -1, 1.5, 0.4);
+    ASSERT_EQ(g.summary.status, Status::ok) << v.name;
     const double scale = std::abs(v.t.a2 - v.t.a0) / std::abs(base.a2 - base.a0);
-    EXPECT_LE(rel(g.length, scale * ref.length), 1e-13) << v.name;
-    const double k0 = v.reversed ? ref.kappa1 : ref.kappa0, k1 = v.reversed ? ref.kappa0 : ref.kappa1;
-    EXPECT_LE(rel(g.kappa0, v.kappa_sign * k0 / scale), 1e-12) << v.name;
-    EXPECT_LE(rel(g.kappa1, v.kappa_sign * k1 / scale), 1e-12) << v.name;
-    EXPECT_LE(rel(g.pieces[0].lambda, ref.pieces[0].lambda), 1e-12) << v.name;
-    EXPECT_EQ(g.segment0_at_a0, !v.reversed) << v.name;
+    EXPECT_LE(rel(g.curve.length(), scale * ref.curve.length()), 1e-13) << v.name;
+    const double k0 = v.reversed ? kappa_end(ref) : kappa_start(ref), k1 = v.reversed ? kappa_start(ref) : kappa_end(ref);
+    EXPECT_LE(rel(kappa_start(g), v.kappa_sign * k0 / scale), 1e-12) << v.name;
+    EXPECT_LE(rel(kappa_end(g), v.kappa_sign * k1 / scale), 1e-12) << v.name;
+    EXPECT_LE(rel(g.info.pieces[0].lambda, ref.info.pieces[0].lambda), 1e-12) << v.name;
+    EXPECT_EQ(g.info.segment0_at_a0, !v.reversed) << v.name;
+    // The curve runs from a0: segment 0 (α0 = −1) first unless swapped.
+    EXPECT_EQ(g.curve.segments()[0].law().alpha, v.reversed ? 1.5 : -1.0) << v.name;
+    EXPECT_EQ(g.curve.segments()[0].start(), v.t.a0) << v.name;
   }
 }
 
@@ -181,37 +306,52 @@ TEST(PlanarSegments, JointIsG3) {
   const double cases[][3] = {{-1, 1.5, 0.4}, {1.5, -1, 0.6}, {0.5, 2, 0.3}, {2, 0.5, 0.5}, {1, -0.5, 0.5}, {0, 3, 0.5}, {3, 0, 0.2}};
   double worst = 0, worst_numeric = 0;
   for (const auto& c : cases) {
-    const G1Segment g = solve_compound(t, c[0], c[1], c[2]);
-    ASSERT_EQ(g.status, Status::ok) << g.message;
-    const StandardForm& f = g.form;
+    const TriangleResult g = solve_compound(t, c[0], c[1], c[2]);
+    ASSERT_EQ(g.summary.status, Status::ok) << g.summary.message;
+    const TriangleInfo& info = g.info;
+    ASSERT_TRUE(info.segment0_at_a0);
     // Paper's construction of segment 1 (001 §4): LaCurve(α1, Λ1) with Λ1 = Λ0 ρc^(α1−α0) from
-    // θs, where its ρ equals ρc. Both sides in segment 0's standard-form units.
-    const LaCurve c0(c[0], f.lambda0);
-    const double theta_joint = f.configuration_b ? 0.0 : f.theta0;
+    // θs, where its ρ equals ρc. Both sides in segment 0's standard-form units (ρ = 1 at the
+    // start in configuration a, α0 ≤ 1; at the joint in configuration b).
+    const double lambda0 = info.pieces[0].lambda;
+    const LaCurve c0(c[0], lambda0);
+    const double theta_joint = c[0] > 1 ? 0.0 : info.pieces[0].turning;
     const double rho_c = c0.rho_at_theta(theta_joint);
-    const LaCurve c1(c[1], g.pieces[1].lambda);
+    const LaCurve c1(c[1], info.pieces[1].lambda);
     const double theta_s = c1.theta_at_log_rho(std::log(rho_c));
     const double rho_1 = c1.rho_at_theta(theta_s);
-    // dρ/ds = Λ ρ^(1−α) (MATH.md §1: ds/dρ = ρ^(α−1)/Λ).
-    const double d0 = f.lambda0 * std::pow(rho_c, 1 - c[0]);
-    const double d1 = g.pieces[1].lambda * std::pow(rho_1, 1 - c[1]);
+    // dρ/ds = Λ ρ^(1−α) (ds/dρ = ρ^(α−1)/Λ).
+    const double d0 = lambda0 * std::pow(rho_c, 1 - c[0]);
+    const double d1 = info.pieces[1].lambda * std::pow(rho_1, 1 - c[1]);
     worst = std::max({worst, rel(rho_1, rho_c), rel(d1, d0)});
     EXPECT_LE(rel(rho_1, rho_c), kJointTol);
     EXPECT_LE(rel(d1, d0), kJointTol);
-    EXPECT_LE(rel(g.rho_joint, std::abs(f.scale_rotation) * rho_c), 1e-13);
+    EXPECT_LE(rel(info.rho_joint, info.pieces[0].rho_large), 1e-15);
+    const double rho_start = c[0] > 1 ? c0.rho_at_theta(-info.pieces[0].turning) : 1.0;  // standard units
+    const double k = info.pieces[0].rho_small / rho_start;  // the similarity's scale
+    EXPECT_LE(rel(info.rho_joint, k * rho_c), 1e-13);
 
-    // From the produced samples: one-sided second-order differences of ρ(s) on both sides.
-    const auto pts = sample_segment(g, 4001);
-    size_t j = 0;
-    while (pts[j + 1].piece == pts[0].piece) ++j;  // last sample of the first piece (the joint)
-    ASSERT_LE(std::abs(pts[j].position - g.joint), 1e-12 * g.length);
-    auto rho = [&](size_t k) { return 1 / std::abs(pts[k].kappa); };
-    const double hl = pts[j].s - pts[j - 1].s, hr = pts[j + 2].s - pts[j + 1].s;
-    const double left = (3 * rho(j) - 4 * rho(j - 1) + rho(j - 2)) / (2 * hl);
-    const double right = (-3 * rho(j) + 4 * rho(j + 1) - rho(j + 2)) / (2 * hr);
-    worst_numeric = std::max(worst_numeric, std::abs(left - right) / std::abs(left));
-    EXPECT_LE(std::abs(left - right) / std::abs(left), kJointNumericTol);
-    EXPECT_NEAR(pts[j].theta, pts[j + 1].theta - (pts[j + 1].s - pts[j].s) * pts[j].kappa, 1e-6);
+    // The returned curve: joined G2 at info.joint, and dκ/ds continuous there (closed forms on
+    // each segment, and one-sided second-order differences of ρ(s) on both sides).
+    const PlanarCurve& curve = g.curve;
+    ASSERT_EQ(curve.segments().size(), 2u);
+    const Joint j = curve.joints(GkTanhSinh{})[0];
+    EXPECT_LE(j.position_gap, 1e-12 * curve.length());
+    EXPECT_LE(std::abs(j.angle_gap), 1e-14);
+    EXPECT_LE(std::abs(j.curvature_gap), 1e-12 / info.rho_joint);
+    EXPECT_EQ(curve.segments()[1].start(), info.joint);
+    EXPECT_LE(rel(1 / std::abs(curve.kappa_at(j.s)), info.rho_joint), 1e-13);
+    const LaSegment& s0 = curve.segments()[0];
+    const double left = s0.dkappa_ds_at(s0.length()), right = curve.segments()[1].dkappa_ds_at(0);
+    EXPECT_LE(rel(right, left), kJointTol);
+    const double h = curve.length() / 4000;
+    auto rho = [&](double s) { return 1 / std::abs(curve.kappa_at(s)); };
+    const double before = std::nextafter(j.s, 0.0);  // on segment 0
+    const double dl = (3 * rho(before) - 4 * rho(j.s - h) + rho(j.s - 2 * h)) / (2 * h);
+    const double dr = (-3 * rho(j.s) + 4 * rho(j.s + h) - rho(j.s + 2 * h)) / (2 * h);
+    worst_numeric = std::max(worst_numeric, rel(dr, dl));
+    EXPECT_LE(rel(dr, dl), kJointNumericTol);
+    EXPECT_NEAR(curve.theta_at(j.s), curve.theta_at(j.s + h) - h * curve.kappa_at(j.s), 1e-6);
   }
   std::printf("  joint: worst relative mismatch of rho and drho/ds %.2e (closed forms), %.2e (finite differences)\n", worst,
               worst_numeric);
@@ -224,20 +364,20 @@ double menger(Point2 p, Point2 q, Point2 r) {
   return 2 * cr / (std::abs(a) * std::abs(b) * std::abs(c));
 }
 
-/// LCG slope of the samples of one piece from positions only: κ by Menger curvature, s by chord
-/// sums, dρ/ds by central differences, least-squares slope of log(ρ ds/dρ) against log ρ.
-double lcg_slope_from_positions(const std::vector<SegmentSample>& pts, int piece) {
+/// LCG slope of curve segment k from positions only: κ by Menger curvature, s by chord sums, dρ/ds
+/// by central differences, least-squares slope of log(ρ ds/dρ) against log ρ.
+double lcg_slope_from_positions(const PlanarCurve& curve, size_t k) {
   std::vector<Point2> p;
-  for (const auto& q : pts)
-    if (q.piece == piece) p.push_back(q.position);
+  for (const auto& q : polyline(curve, curve.segment_start(k), curve.segment_start(k + 1), 1500, GkTanhSinh{}))
+    p.push_back(q.point.position);
   std::vector<double> s(p.size(), 0.0), rho(p.size(), 0.0);
-  for (size_t k = 1; k < p.size(); ++k) s[k] = s[k - 1] + std::abs(p[k] - p[k - 1]);
-  for (size_t k = 1; k + 1 < p.size(); ++k) rho[k] = 1 / std::abs(menger(p[k - 1], p[k], p[k + 1]));
+  for (size_t i = 1; i < p.size(); ++i) s[i] = s[i - 1] + std::abs(p[i] - p[i - 1]);
+  for (size_t i = 1; i + 1 < p.size(); ++i) rho[i] = 1 / std::abs(menger(p[i - 1], p[i], p[i + 1]));
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
-  for (size_t k = 3; k + 3 < p.size(); ++k) {
-    const double drho_ds = (rho[k + 1] - rho[k - 1]) / (s[k + 1] - s[k - 1]);
-    const double x = std::log(rho[k]), y = std::log(rho[k] * std::abs(1 / drho_ds));
+  for (size_t i = 3; i + 3 < p.size(); ++i) {
+    const double drho_ds = (rho[i + 1] - rho[i - 1]) / (s[i + 1] - s[i - 1]);
+    const double x = std::log(rho[i]), y = std::log(rho[i] * std::abs(1 / drho_ds));
     sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
   }
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
@@ -248,18 +388,18 @@ TEST(PlanarSegments, LcgOfEachPieceIsALineOfSlopeAlpha) {
   const double cases[][3] = {{-1, 1.5, 0.4}, {1.5, -1, 0.6}, {0.5, 2, 0.5}, {2, 0, 0.5}};
   double worst = 0;
   for (const auto& c : cases) {
-    const G1Segment g = solve_compound(t, c[0], c[1], c[2]);
-    ASSERT_EQ(g.status, Status::ok);
-    const auto pts = sample_segment(g, 3001);
-    for (int piece = 0; piece < 2; ++piece) {
-      const double slope = lcg_slope_from_positions(pts, piece);
+    const TriangleResult g = solve_compound(t, c[0], c[1], c[2]);
+    ASSERT_EQ(g.summary.status, Status::ok);
+    ASSERT_TRUE(g.info.segment0_at_a0);
+    for (size_t piece = 0; piece < 2; ++piece) {
+      const double slope = lcg_slope_from_positions(g.curve, piece);
       worst = std::max(worst, std::abs(slope - c[piece]));
       EXPECT_NEAR(slope, c[piece], kLcgSlopeTol) << "alpha0 " << c[0] << " alpha1 " << c[1] << " piece " << piece;
     }
     // The monotonic segment too.
-    const G1Segment m = solve_g1(t, c[0]);
-    ASSERT_EQ(m.status, Status::ok);
-    const double slope = lcg_slope_from_positions(sample_segment(m, 3001), 0);
+    const TriangleResult m = solve_g1(t, c[0]);
+    ASSERT_EQ(m.summary.status, Status::ok);
+    const double slope = lcg_slope_from_positions(m.curve, 0);
     worst = std::max(worst, std::abs(slope - c[0]));
     EXPECT_NEAR(slope, c[0], kLcgSlopeTol);
   }
@@ -271,32 +411,31 @@ TEST(PlanarSegments, CompoundReducesToMonotonic) {
   const double pairs[][2] = {{-1, 1.5}, {1.5, -1}, {0.5, 2}, {2, 0}};
   // Λ depends on where the standard form puts ρ = 1, so the pieces are compared by Λ in user
   // units (intrinsic to the curve).
+  auto same = [](const TriangleResult& a, const TriangleResult& b, double tol) {
+    EXPECT_LE(rel(a.curve.length(), b.curve.length()), tol);
+    EXPECT_LE(rel(kappa_start(a), kappa_start(b)), tol);
+    EXPECT_LE(rel(kappa_end(a), kappa_end(b)), tol);
+  };
   int compared = 0;
   for (const auto& t : tris) {
     for (const auto& a : pairs) {
-      const G1Segment m0 = solve_g1(t, a[0]), m1 = solve_g1(t, a[1]);
-      if (m0.status != Status::ok || m1.status != Status::ok) continue;  // not drawable as a monotonic segment
+      const TriangleResult m0 = solve_g1(t, a[0]), m1 = solve_g1(t, a[1]);
+      if (m0.summary.status != Status::ok || m1.summary.status != Status::ok) continue;  // not drawable as a monotonic segment
       ++compared;
-      const G1Segment near1 = solve_compound(t, a[0], a[1], 1 - 1e-9);  // all turning in segment 0
-      const G1Segment near0 = solve_compound(t, a[0], a[1], 1e-9);      // all turning in segment 1
-      ASSERT_EQ(near1.status, Status::ok);
-      ASSERT_EQ(near0.status, Status::ok);
-      EXPECT_LE(rel(near1.length, m0.length), kLimitTol);
-      EXPECT_LE(rel(near1.kappa0, m0.kappa0), kLimitTol);
-      EXPECT_LE(rel(near1.kappa1, m0.kappa1), kLimitTol);
-      EXPECT_LE(rel(near1.pieces[0].lambda_user, m0.pieces[0].lambda_user), kLimitTol);
-      EXPECT_LE(rel(near0.length, m1.length), kLimitTol);
-      EXPECT_LE(rel(near0.kappa0, m1.kappa0), kLimitTol);
-      EXPECT_LE(rel(near0.kappa1, m1.kappa1), kLimitTol);
-      EXPECT_LE(rel(near0.pieces[1].lambda_user, m1.pieces[0].lambda_user), kLimitTol);
+      const TriangleResult near1 = solve_compound(t, a[0], a[1], 1 - 1e-9);  // all turning in segment 0
+      const TriangleResult near0 = solve_compound(t, a[0], a[1], 1e-9);      // all turning in segment 1
+      ASSERT_EQ(near1.summary.status, Status::ok);
+      ASSERT_EQ(near0.summary.status, Status::ok);
+      same(near1, m0, kLimitTol);
+      EXPECT_LE(rel(near1.info.pieces[0].lambda_user, m0.info.pieces[0].lambda_user), kLimitTol);
+      same(near0, m1, kLimitTol);
+      EXPECT_LE(rel(near0.info.pieces[1].lambda_user, m1.info.pieces[0].lambda_user), kLimitTol);
       for (double r : {0.2, 0.5, 0.8}) {  // α0 = α1: the same curve for every r
-        const G1Segment same = solve_compound(t, a[0], a[0], r);
-        ASSERT_EQ(same.status, Status::ok);
-        EXPECT_LE(rel(same.length, m0.length), kSameCurveTol);
-        EXPECT_LE(rel(same.kappa0, m0.kappa0), kSameCurveTol);
-        EXPECT_LE(rel(same.kappa1, m0.kappa1), kSameCurveTol);
-        EXPECT_LE(rel(same.pieces[0].lambda_user, m0.pieces[0].lambda_user), kSameCurveTol);
-        EXPECT_LE(rel(same.pieces[1].lambda_user, m0.pieces[0].lambda_user), kSameCurveTol);
+        const TriangleResult s = solve_compound(t, a[0], a[0], r);
+        ASSERT_EQ(s.summary.status, Status::ok);
+        same(s, m0, kSameCurveTol);
+        EXPECT_LE(rel(s.info.pieces[0].lambda_user, m0.info.pieces[0].lambda_user), kSameCurveTol);
+        EXPECT_LE(rel(s.info.pieces[1].lambda_user, m0.info.pieces[0].lambda_user), kSameCurveTol);
       }
     }
   }
@@ -306,24 +445,82 @@ TEST(PlanarSegments, CompoundReducesToMonotonic) {
 TEST(PlanarSegments, IsoscelesTriangleGivesTheCircularArc) {
   const ControlTriangle t{{0, 0}, {1, 1}, {2, 0}};  // legs equal, turning π/2
   for (double a : {-1.0, 0.0, 2.0}) {
-    const G1Segment g = solve_g1(t, a);
-    ASSERT_EQ(g.status, Status::ok);
+    const TriangleResult g = solve_g1(t, a);
+    ASSERT_EQ(g.summary.status, Status::ok);
     const double radius = std::sqrt(2.0);
-    EXPECT_LE(rel(g.length, radius * std::numbers::pi / 2), 1e-14);
-    EXPECT_LE(rel(g.kappa0, -1 / radius), 1e-14);
-    EXPECT_EQ(g.pieces[0].lambda, 0.0);
+    EXPECT_LE(rel(g.curve.length(), radius * std::numbers::pi / 2), 1e-14);
+    EXPECT_LE(rel(kappa_start(g), -1 / radius), 1e-14);
+    EXPECT_EQ(g.info.pieces[0].lambda, 0.0);
+    EXPECT_EQ(g.summary.constructions, 1);  // the arc itself, no search
   }
+}
+
+/// Control triangle on the unit base with base angles b0 (at a0) and b2 (at a2).
+ControlTriangle base_angles(double b0, double b2) {
+  const double h = std::sin(b0) * std::sin(b2) / std::sin(b0 + b2);
+  return {{0, 0}, {h / std::tan(b0), h}, {1, 0}};
 }
 
 TEST(PlanarSegments, OutsideTheDrawableRegionIsAStatus) {
   const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
-  const G1Segment g = solve_g1(t, 5.0);  // α > 1: ρ reaches 0 before the start angle is large enough
-  EXPECT_EQ(g.status, Status::no_solution);
-  EXPECT_NE(g.message.find("drawable"), std::string::npos);
-  EXPECT_TRUE(g.pieces.empty());
-  EXPECT_THROW(sample_segment(g, 10), InputError);
-  const G1Segment h = solve_g1({{10, 0}, {2, 0}, {0, 3}}, 3.0);
-  EXPECT_EQ(h.status, Status::no_solution);
+  const TriangleResult g = solve_g1(t, 5.0);  // α > 1: ρ reaches 0 before the start angle is large enough
+  EXPECT_EQ(g.summary.status, Status::no_solution);
+  EXPECT_NE(g.summary.message.find("drawable"), std::string::npos);
+  EXPECT_TRUE(g.info.pieces.empty());
+  EXPECT_TRUE(g.curve.segments().empty());
+  EXPECT_THROW(g.curve.sample(10), InputError);
+  ASSERT_TRUE(g.info.start_angle_limit.has_value());
+  EXPECT_GE(g.info.target_angle, *g.info.start_angle_limit);
+  const TriangleResult h = solve_g1({{10, 0}, {2, 0}, {0, 3}}, 3.0);
+  EXPECT_EQ(h.summary.status, Status::no_solution);
+  // α = 0: the start angle tends to the turning as Λ0 → Λmax (the length diverges), so a curve
+  // exists for every triangle; for this skewed one its Λ0 lies closer to Λmax than the probes
+  // resolve in double precision: not_converged, not no_solution.
+  const TriangleResult z = solve_g1(base_angles(2.9, 0.04), 0.0);
+  EXPECT_EQ(z.summary.status, Status::not_converged) << z.summary.message;
+  ASSERT_TRUE(z.info.start_angle_limit.has_value());
+  EXPECT_NEAR(*z.info.start_angle_limit, 2.94, 1e-14);
+  EXPECT_LT(z.info.target_angle, *z.info.start_angle_limit);
+  EXPECT_NE(z.summary.message.find("probes"), std::string::npos) << z.summary.message;
+}
+
+// The start angle increases with Λ0 (docs/planar_segments.md), so over the triangles of one
+// turning the solution Λ0 increases with the target angle, every solved target lies below the
+// start angle's limit and every no_solution target at or above it.
+TEST(PlanarSegments, DrawableExactlyBelowTheLimitOfTheStartAngle) {
+  struct Family {
+    double alpha0, alpha1, r;  // r = 1: monotonic
+  };
+  const Family families[] = {{-1, -1, 1}, {2, 2, 1}, {3, 3, 1}, {-1, 2, 0.3}, {0.5, 2, 0.5}, {2, -1, 0.5}, {3, 0, 0.5}, {-2, -0.5, 0.5}};
+  for (const Family& fam : families) {
+    for (double turning : {0.6, 1.5, 2.6}) {
+      std::vector<std::pair<double, double>> solved;  // target, Λ0 (the search variable, standard-form units)
+      std::optional<double> limit;
+      int none = 0;
+      for (int i = 1; i < 200; ++i) {
+        const double b0 = turning * (0.5 + 0.5 * i / 200.0);  // the target angle, from θ/2 to θ
+        const ControlTriangle t = base_angles(b0, turning - b0);
+        const TriangleResult g = fam.r < 1 ? solve_compound(t, fam.alpha0, fam.alpha1, fam.r) : solve_g1(t, fam.alpha0);
+        if (g.info.start_angle_limit) {
+          if (limit) EXPECT_NEAR(*limit, *g.info.start_angle_limit, 1e-14);  // depends on α0, α1, r and θ only
+          limit = g.info.start_angle_limit;
+        }
+        if (g.summary.status == Status::ok) {
+          solved.push_back({g.info.target_angle, g.info.pieces[0].lambda});
+        } else if (g.summary.status == Status::not_converged) {  // a curve exists, Λ0 not resolved
+          EXPECT_LT(g.info.target_angle, *g.info.start_angle_limit);
+        } else {
+          ASSERT_EQ(g.summary.status, Status::no_solution) << g.summary.message;
+          EXPECT_GE(g.info.target_angle, *g.info.start_angle_limit);
+          ++none;
+        }
+      }
+      ASSERT_GT(none, 0) << fam.alpha0 << " " << fam.alpha1 << " " << turning;
+      ASSERT_GT(solved.size(), 10u);
+      for (size_t i = 1; i < solved.size(); ++i) EXPECT_GT(solved[i].second, solved[i - 1].second);
+      EXPECT_LT(solved.back().first, *limit);
+    }
+  }
 }
 
 void expect_input_error(const std::function<void()>& f, const std::string& parameter) {
@@ -347,20 +544,55 @@ TEST(PlanarSegments, DegenerateInputThrows) {
   expect_input_error([&] { solve_compound({{0, 0}, {1, 0}, {2, 1}}, 1, INFINITY, 0.5); }, "alpha1");
   for (double r : {0.0, 1.0, -0.1, 1.5, nan})
     expect_input_error([&] { solve_compound({{0, 0}, {1, 0}, {2, 1}}, 1, 2, r); }, "r");
-  SegmentOptions o;
+  TriangleOptions o;
   o.root.max_iterations = 0;
   expect_input_error([&] { solve_g1({{0, 0}, {1, 0}, {2, 1}}, 1, o); }, "max_iterations");
+  TriangleOptions q;
+  q.integrator = Rk4{.h = -1};
+  expect_input_error([&] { solve_g1({{0, 0}, {1, 0}, {2, 1}}, 1, q); }, "h");
 }
 
-TEST(PlanarSegments, IntegratorChoiceAgrees) {
-  const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
-  const G1Segment ref = solve_compound(t, -1, 1.5, 0.4);
-  for (const char* name : {"gauss-kronrod", "rk45"}) {
-    const G1Segment g = solve_compound(t, -1, 1.5, 0.4, SegmentOptions{}, make_quadrature(name));
-    ASSERT_TRUE(usable(g.status)) << name << " " << g.message;
-    EXPECT_LE(rel(g.length, ref.length), 1e-10) << name;
-    EXPECT_LE(rel(g.pieces[0].lambda, ref.pieces[0].lambda), 1e-9) << name;
+// A root finder's failure is its own status, passed through with its message.
+TEST(PlanarSegments, RootFinderFailurePassesThrough) {
+  TriangleOptions o;
+  o.solver = RootMethod::bisection;
+  o.root.max_iterations = 3;
+  const TriangleResult g = solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, o);
+  EXPECT_EQ(g.summary.status, Status::max_iterations);
+  EXPECT_NE(g.summary.message.find("bisection"), std::string::npos) << g.summary.message;
+  EXPECT_EQ(g.summary.iterations, 3);
+  EXPECT_TRUE(g.curve.segments().empty());
+}
+
+// A trial curve whose positions fail (here rk4's step budget) has no start angle: the search
+// ends with that status and says why, never with a curve drawn from a partial integral.
+TEST(PlanarSegments, FailedTrialPositionsAreTheStatus) {
+  TriangleOptions o;
+  o.integrator = Rk4{.max_steps = 10};
+  for (bool compound : {false, true}) {
+    const TriangleResult g = compound ? solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, 1.5, 0.4, o)
+                                      : solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, o);
+    EXPECT_EQ(g.summary.status, Status::max_iterations) << g.summary.message;
+    EXPECT_NE(g.summary.message.find("positions of the trial curve"), std::string::npos) << g.summary.message;
+    EXPECT_NE(g.summary.message.find("rk4"), std::string::npos) << g.summary.message;
+    EXPECT_TRUE(g.curve.segments().empty());
+    EXPECT_EQ(g.summary.integrator, "rk4");
   }
+}
+
+TEST(PlanarSegments, SummaryCountsTheWork) {
+  const TriangleResult g = solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, 1.5, 0.4);
+  ASSERT_EQ(g.summary.status, Status::ok);
+  EXPECT_GT(g.summary.iterations, 0);
+  EXPECT_GE(g.summary.constructions, g.info.bracket_probes + g.summary.iterations);
+  EXPECT_GT(g.summary.evaluations, 21 * g.summary.constructions);  // two pieces of ≥ one 21-point panel each
+  EXPECT_GT(g.summary.seconds, 0);
+  EXPECT_EQ(g.summary.integrator, "gk-tanh-sinh");
+  EXPECT_EQ(g.summary.solver, "toms748");
+  ASSERT_TRUE(g.summary.residuals.angle.has_value());
+  EXPECT_LE(*g.summary.residuals.angle, 1e-12);
+  EXPECT_FALSE(g.summary.residuals.position.has_value());
+  EXPECT_LE(std::abs(g.info.residual), 1e-15);
 }
 
 }  // namespace
@@ -377,6 +609,7 @@ TEST(PlanarSegments, ExtremeInputGivesAStatusNeverNaN) {
   std::uniform_real_distribution<double> u(0, 1);
   const double alphas[] = {-50, -5, -1e-9, 0, 1e-9, 1 - 1e-9, 1, 1 + 1e-9, 5, 50};
   int usable_count = 0, cases = 0;
+  std::map<std::string, int> statuses;
   while (cases < 600) {
     const double b0 = std::pow(10.0, -6 * u(rng)) * 3.1, b2 = std::pow(10.0, -6 * u(rng)) * 3.1;
     if (b0 + b2 >= 3.14159) continue;
@@ -387,18 +620,22 @@ TEST(PlanarSegments, ExtremeInputGivesAStatusNeverNaN) {
     const double a0 = u(rng) < 0.5 ? alphas[rng() % 10] : -3 + 7 * u(rng);
     const double a1 = u(rng) < 0.5 ? alphas[rng() % 10] : -3 + 7 * u(rng);
     const double r = std::max(1e-12, u(rng));
-    const G1Segment g = cases % 2 ? solve_compound(t, a0, a1, r) : solve_g1(t, a0);
-    if (!usable(g.status)) {
-      EXPECT_FALSE(g.message.empty());
+    const TriangleResult g = cases % 2 ? solve_compound(t, a0, a1, r) : solve_g1(t, a0);
+    ++statuses[std::string(to_string(g.summary.status))];
+    if (!g.usable()) {
+      EXPECT_FALSE(g.summary.message.empty());
       continue;
     }
     ++usable_count;
-    ASSERT_TRUE(std::isfinite(g.length) && std::isfinite(g.kappa0) && std::isfinite(g.kappa1));
-    EXPECT_LE(g.tangent_error, 1e-6);
-    for (const auto& q : sample_segment(g, 12))
-      ASSERT_TRUE(std::isfinite(std::abs(q.position)) && std::isfinite(q.kappa) && std::isfinite(q.s));
+    const PlanarCurve& c = g.curve;
+    ASSERT_TRUE(std::isfinite(c.length()) && std::isfinite(kappa_start(g)) && std::isfinite(kappa_end(g)));
+    EXPECT_LE(*g.summary.residuals.angle, 1e-6);
+    for (const auto& q : c.sample(12, GkTanhSinh{}))
+      ASSERT_TRUE(std::isfinite(std::abs(q.point.position)) && std::isfinite(q.point.kappa) && std::isfinite(q.point.s));
   }
-  std::printf("  %d extreme cases, %d usable\n", cases, usable_count);
+  std::string text;
+  for (const auto& [s, n] : statuses) text += " " + s + " " + std::to_string(n);
+  std::printf("  %d extreme cases, %d usable;%s\n", cases, usable_count, text.c_str());
   EXPECT_GT(usable_count, 60);
 }
 

@@ -96,8 +96,10 @@ TEST(FuzzRegression, CliRejectsHugePointCounts) {
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-void expect_finite_samples(const lac::G1Segment& g, const std::string& what) {
-  for (const lac::SegmentSample& q : lac::sample_segment(g, 50)) {
+void expect_finite_samples(const lac::TriangleResult& g, const std::string& what) {
+  for (const lac::PositionResult& r : g.curve.sample(50, lac::GkTanhSinh{})) {
+    const lac::CurvePoint& q = r.point;
+    EXPECT_EQ(r.status, lac::Status::ok) << what << ": sample at s = " << q.s << ": " << r.message;
     ASSERT_TRUE(std::isfinite(q.position.real()) && std::isfinite(q.position.imag()) && std::isfinite(q.s) &&
                 std::isfinite(q.theta) && std::isfinite(q.kappa))
         << what << ": sample at s = " << q.s;
@@ -109,25 +111,25 @@ void expect_finite_samples(const lac::G1Segment& g, const std::string& what) {
 // invariant: the scaled triangles must give the unit triangle's segment, scaled.
 TEST(FuzzRegression, TinyAndHugeTrianglesSolveLikeTheUnitTriangle) {
   const lac::ControlTriangle unit{{0, 0}, {1, 0}, {2, 1}};
-  const lac::G1Segment ref = lac::solve_g1(unit, 1.0);
-  const lac::G1Segment ref_c = lac::solve_compound(unit, 0.5, 1.5, 0.4);
-  ASSERT_EQ(ref.status, lac::Status::ok) << ref.message;
-  ASSERT_EQ(ref_c.status, lac::Status::ok) << ref_c.message;
+  const lac::TriangleResult ref = lac::solve_g1(unit, 1.0);
+  const lac::TriangleResult ref_c = lac::solve_compound(unit, 0.5, 1.5, 0.4);
+  ASSERT_EQ(ref.summary.status, lac::Status::ok) << ref.summary.message;
+  ASSERT_EQ(ref_c.summary.status, lac::Status::ok) << ref_c.summary.message;
   for (double k : {1e-300, 1e-200, 1e300}) {
     const lac::ControlTriangle t{unit.a0 * k, unit.a1 * k, unit.a2 * k};
     const std::string what = "unit triangle times " + lac::format_number(k);
-    const lac::G1Segment g = lac::solve_g1(t, 1.0);
-    ASSERT_EQ(g.status, lac::Status::ok) << what << ": " << g.message;
-    EXPECT_NEAR(g.turning, std::atan(1.0), 1e-15) << what;
-    EXPECT_LE(rel(g.length / k, ref.length), 1e-13) << what;
-    EXPECT_LE(rel(g.kappa0 * k, ref.kappa0), 1e-13) << what;
-    EXPECT_LE(rel(g.pieces[0].lambda_user, ref.pieces[0].lambda_user), 1e-13) << what;  // α = 1: scale-free
+    const lac::TriangleResult g = lac::solve_g1(t, 1.0);
+    ASSERT_EQ(g.summary.status, lac::Status::ok) << what << ": " << g.summary.message;
+    EXPECT_NEAR(g.info.turning, std::atan(1.0), 1e-15) << what;
+    EXPECT_LE(rel(g.curve.length() / k, ref.curve.length()), 1e-13) << what;
+    EXPECT_LE(rel(g.curve.kappa_at(0) * k, ref.curve.kappa_at(0)), 1e-13) << what;
+    EXPECT_LE(rel(g.info.pieces[0].lambda_user, ref.info.pieces[0].lambda_user), 1e-13) << what;  // α = 1: scale-free
     expect_finite_samples(g, what);
-    const lac::G1Segment c = lac::solve_compound(t, 0.5, 1.5, 0.4);
-    ASSERT_EQ(c.status, lac::Status::ok) << what << ": " << c.message;
-    EXPECT_LE(rel(c.length / k, ref_c.length), 1e-13) << what;
-    EXPECT_LE(rel(c.rho_joint / k, ref_c.rho_joint), 1e-13) << what;
-    EXPECT_LE(rel(c.pieces[0].lambda_user, ref_c.pieces[0].lambda_user * std::pow(k, -0.5)), 1e-13) << what;
+    const lac::TriangleResult c = lac::solve_compound(t, 0.5, 1.5, 0.4);
+    ASSERT_EQ(c.summary.status, lac::Status::ok) << what << ": " << c.summary.message;
+    EXPECT_LE(rel(c.curve.length() / k, ref_c.curve.length()), 1e-13) << what;
+    EXPECT_LE(rel(c.info.rho_joint / k, ref_c.info.rho_joint), 1e-13) << what;
+    EXPECT_LE(rel(c.info.pieces[0].lambda_user, ref_c.info.pieces[0].lambda_user * std::pow(k, -0.5)), 1e-13) << what;
     expect_finite_samples(c, what);
   }
   const lac::test::CliRun r = lac::test::run_lac("g1 --points '0,0 1e-300,0 2e-300,1e-300' --alpha 1");
@@ -143,12 +145,12 @@ TEST(FuzzRegression, OverflowingTriangleIsRejected) {
   for (const lac::ControlTriangle& t : {saved, overflowing, subnormal}) {
     for (const lac::RootMethodInfo& method : lac::root_methods()) {
       const std::string_view name = method.name;
-      lac::SegmentOptions o;
+      lac::TriangleOptions o;
       o.solver = lac::parse_root_method(name);
       for (bool compound : {false, true}) {
         try {
-          const lac::G1Segment g = compound ? lac::solve_compound(t, 0.0, 1.0, 0.5, o) : lac::solve_g1(t, 0.0, o);
-          ADD_FAILURE() << name << ": status " << lac::to_string(g.status) << ", length " << g.length
+          const lac::TriangleResult g = compound ? lac::solve_compound(t, 0.0, 1.0, 0.5, o) : lac::solve_g1(t, 0.0, o);
+          ADD_FAILURE() << name << ": status " << lac::to_string(g.summary.status) << ", length " << g.curve.length()
                         << " instead of an InputError naming points";
         } catch (const lac::InputError& e) {
           EXPECT_EQ(e.parameter(), "points") << e.what();
@@ -163,12 +165,12 @@ TEST(FuzzRegression, OverflowingTriangleIsRejected) {
 // (Λ_user = Λ k^(α−1) with k = 1e-300, α = −1): a failed status that says so, never inf.
 TEST(FuzzRegression, UnrepresentableUserUnitsAreAStatus) {
   const double k = 1e-300;
-  const lac::G1Segment g = lac::solve_g1({{0, 0}, {k, 0}, {2 * k, k}}, -1.0);
-  EXPECT_EQ(g.status, lac::Status::numerical_failure) << g.message;
-  EXPECT_NE(g.message.find("lambda_user"), std::string::npos) << g.message;
-  EXPECT_THROW(lac::sample_segment(g, 10), lac::InputError);
-  const lac::G1Segment ok = lac::solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0);  // same shape, unit scale
-  EXPECT_EQ(ok.status, lac::Status::ok) << ok.message;
+  const lac::TriangleResult g = lac::solve_g1({{0, 0}, {k, 0}, {2 * k, k}}, -1.0);
+  EXPECT_EQ(g.summary.status, lac::Status::numerical_failure) << g.summary.message;
+  EXPECT_NE(g.summary.message.find("lambda_user"), std::string::npos) << g.summary.message;
+  EXPECT_THROW(g.curve.sample(10), lac::InputError);
+  const lac::TriangleResult ok = lac::solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0);  // same shape, unit scale
+  EXPECT_EQ(ok.summary.status, lac::Status::ok) << ok.summary.message;
 }
 
 // Finding R11 (fuzz_space): space-curve laws that overflow gave an empty or NaN s range, NaN

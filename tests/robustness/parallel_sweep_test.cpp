@@ -73,14 +73,17 @@ void expect_same_with_1_and_n_threads(size_t n, Solve solve) {
   EXPECT_GT(ok, 0u) << "no problem of the sweep was solved; the comparison would be vacuous";
 }
 
-Fingerprint fingerprint(const lac::G1Segment& g) {
-  Fingerprint f{std::string(lac::to_string(g.status)), {}};
-  for (double v : {g.length, g.kappa0, g.kappa1, g.turning, g.tangent_error, g.residual, g.rho_joint, g.joint.real(),
-                   g.joint.imag()})
+Fingerprint fingerprint(const lac::TriangleResult& g) {
+  Fingerprint f{std::string(lac::to_string(g.summary.status)), {}};
+  const lac::PlanarCurve& c = g.curve;
+  const bool curve = !c.segments().empty();
+  for (double v : {c.length(), curve ? c.kappa_at(0) : 0.0, curve ? c.kappa_at(c.length()) : 0.0, g.info.turning,
+                   g.summary.residuals.angle.value_or(0.0), g.info.residual, g.info.rho_joint, g.info.joint.real(),
+                   g.info.joint.imag()})
     f.numbers.push_back(bits(v));
-  for (const auto& p : g.pieces) f.numbers.push_back(bits(p.lambda_user));
-  f.numbers.push_back(static_cast<uint64_t>(g.iterations));
-  f.numbers.push_back(static_cast<uint64_t>(g.evaluations));
+  for (const auto& p : g.info.pieces) f.numbers.push_back(bits(p.lambda_user));
+  f.numbers.push_back(static_cast<uint64_t>(g.summary.iterations));
+  f.numbers.push_back(static_cast<uint64_t>(g.summary.evaluations));
   return f;
 }
 
@@ -128,7 +131,7 @@ TEST(ParallelSweep, RandomPlanarTrianglesSameWithOneAndManyThreads) {
   }
   expect_same_with_1_and_n_threads(cases.size(), [&](size_t k) {
     const Case& c = cases[k];
-    lac::SegmentOptions o;
+    lac::TriangleOptions o;
     o.solver = c.solver;
     return fingerprint(k % 2 ? lac::solve_compound(c.t, c.alpha0, c.alpha1, c.r, o) : lac::solve_g1(c.t, c.alpha0, o));
   });
