@@ -4,7 +4,7 @@
 Usage: planar_drawable.py RESULTS_DIR. Writes RESULTS_DIR/figures/planar_drawable.png: one panel per
 (alpha0, alpha1, r); axes are the control triangle's base angles b0 (at a0) and b2 (at a2) in degrees;
 colour: drawable (ok, shaded by log10 of Lambda0 in units where |a2 - a0| = 1), tolerance_not_met (orange),
-no curve (light grey), other failures (red). The upper-right half (b0 + b2 >= 180 deg) has no triangle.
+no curve (proven; light grey), solver did not converge (blue), other failures (red). The upper-right half (b0 + b2 >= 180 deg) has no triangle.
 """
 import csv
 import math
@@ -32,7 +32,7 @@ def main():
     cols = 4
     nrows = math.ceil(len(panels) / cols)
     fig, axes = plt.subplots(nrows, cols, figsize=(4.2 * cols, 3.9 * nrows), squeeze=False)
-    status_map = ListedColormap(["#d9d9d9", "#ff9f1c", "#d62728"])
+    status_map = ListedColormap(["#d9d9d9", "#ff9f1c", "#1f77b4", "#d62728"])
     lam_im = None
     for ax, (p, cells) in zip(axes.flat, sorted(panels.items())):
         lam = np.full((n, n), np.nan)
@@ -44,9 +44,9 @@ def main():
             if st == "ok":
                 lam[j, i] = math.log10(max(float(r["lambda0_user"]), 1e-6))
             else:
-                other[j, i] = {"no_solution": 0, "tolerance_not_met": 1}.get(st, 2)
+                other[j, i] = {"no_solution": 0, "tolerance_not_met": 1, "not_converged": 2}.get(st, 3)
         ext = [0, 180, 0, 180]
-        ax.imshow(other, origin="lower", extent=ext, cmap=status_map, vmin=0, vmax=2, interpolation="nearest")
+        ax.imshow(other, origin="lower", extent=ext, cmap=status_map, vmin=0, vmax=3, interpolation="nearest")
         lam_im = ax.imshow(lam, origin="lower", extent=ext, cmap="viridis", vmin=-2, vmax=2, interpolation="nearest")
         c = cells[0]
         a0, a1, r_ = float(c["alpha0"]), float(c["alpha1"]), float(c["r"])
@@ -62,7 +62,7 @@ def main():
     for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
     fig.suptitle("Drawable regions over the control triangle's base angles (grey: no curve, orange: tangent tolerance "
-                 "not met, red: other failure; colour: log10 Λ0 in units |a2−a0| = 1)", fontsize=11)
+                 "not met, blue: not converged, red: other failure; colour: log10 Λ0 in units |a2−a0| = 1)", fontsize=11)
     fig.tight_layout(rect=(0, 0, 0.93, 0.96))
     cax = fig.add_axes((0.94, 0.25, 0.012, 0.5))
     fig.colorbar(lam_im, cax=cax, label="log10 Λ0")
