@@ -1,4 +1,4 @@
-// lac quadratic: points of a quadratic log-aesthetic curve (003; MATH.md §4) in standard form.
+// lac quadratic: points of a quadratic log-aesthetic curve (003; docs/math.md §4) in standard form.
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>

@@ -349,7 +349,7 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
     p.opt = &opt;
   }
   // Automatic Λ0 start (lambda_start = 0): for α0 < 1 the total turning is bounded by
-  // 1/((1 − α0)Λ0) (MATH.md §1 θ range) and must exceed about twice the cone angle.
+  // 1/((1 − α0)Λ0) (docs/math.md §1 θ range) and must exceed about twice the cone angle.
   const double lambda_start = opt.lambda_start > 0 ? opt.lambda_start
                               : spec.alpha0 < 1  ? std::min(1.0, 1.0 / (3.0 * problems[0].theta * (1.0 - spec.alpha0)))
                                                  : 1.0;

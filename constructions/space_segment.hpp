@@ -1,6 +1,6 @@
 #pragma once
 // G1 LA space-curve segments by the cone construction (000 §2.2) and compound-rhythm space
-// segments (000 §4), MATH.md §3.
+// segments (000 §4), docs/math.md §3.
 //
 // Given P0, v0, P1, v1 (user coordinates), move P0 to the origin, v0 to +x and P1 into the xy
 // plane (y > 0). The cone with apex 0, axis +x and half-angle θ = angle(P1 − P0, v0) contains P1.

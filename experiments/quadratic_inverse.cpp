@@ -208,7 +208,7 @@ void kappa_table(const std::string& ref_dir, const std::string& out, const Setti
       "for a double s). Ill-conditioned rows (where s(u) is flat to rounding, so a double s does not determine κ; "
       "first-order bound ≥ 1e-13) are left out here; tests/quadratic checks their backward error. `failures`: status "
       "not ok (overflow of e^(α²/(4γ)), argument beyond 003's |z| ≤ 26 / ≤ 5) or an error above 1e-6. "
-      "003's path: MATH.md §4's corrected Eq. (4.6) evaluated as printed (unscaled) with the hybrid inverses, no "
+      "003's path: docs/math.md §4's corrected Eq. (4.6) evaluated as printed (unscaled) with the hybrid inverses, no "
       "polishing. Ours: erfi⁻¹ / erfc⁻¹ in log form on Dawson/erfcx-scaled targets, then safeguarded Halley on s(u).";
   doc.notes = "Times include the curve's domain check; the cases cycle through all parameter sets of the row.";
   lac::io::write_result_table(out, "quadratic_kappa", doc, t);

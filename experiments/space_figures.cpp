@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
       "and the v1 shown, which is the end tangent of the construction at the first (Λ0, ν0, θ) of a fixed trial "
       "list (experiments/space_figures.cpp) that meets both cones; the solver (000's modified downhill simplex, "
       "from its default start) is not told that (Λ0, ν0), so it may find another solution. Λ1, Ω1, ν1, s_c come "
-      "from the LCG/LTG continuity at the joint (000 Eqs. 11, 16–18; MATH.md §3). Length in user units "
+      "from the LCG/LTG continuity at the joint (000 Eqs. 11, 16–18; docs/math.md §3). Length in user units "
       "(|P1 − P0| = 1). Plots: results/figures/space_figures_type1.png, space_figures_type2.png.";
   doc.notes =
       "The paper shows these curves only as pictures (with shadows) and their curvature/torsion plots, without "

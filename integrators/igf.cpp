@@ -57,7 +57,7 @@ struct Curve {
 };
 
 /// |z| ≤ 1.5: C(θ1) − C(θ0) = (e^{−i/k}/k) Σ_n (i/k)^n/n! (U1^{a+n} − U0^{a+n})/(a+n), the
-/// difference of the lower-gamma series of both ends taken term by term (MATH.md §1.1 with
+/// difference of the lower-gamma series of both ends taken term by term (docs/math.md §1.1 with
 /// γ(a, z) = z^a Σ (−z)^n/(n!(a+n)) and (ik)^a (−iU/k)^a = U^a). Any a, no Γ(a).
 Attempt lower_series(const Curve& c, double theta0, double theta1) {
   Attempt r;
@@ -98,7 +98,7 @@ Attempt gamma_form(const Curve& c, double theta0, double theta1, bool& short_ste
   const double u0 = c.u(theta0), u1 = c.u(theta1);
   const cplx z0(0.0, -u0 / c.k), z1(0.0, -u1 / c.k);
   const double delta = theta1 - theta0;
-  // U^a e^{iθ}/k: the factor that turns a scaled Γ at z = −iU/k back into C (MATH.md §1.1).
+  // U^a e^{iθ}/k: the factor that turns a scaled Γ at z = −iU/k back into C (docs/math.md §1.1).
   auto weight = [&](double u, double theta) { return std::polar(std::pow(u, c.a) / c.k, theta); };
   short_step = std::abs(delta) <= kShortStep && std::abs(c.k * delta) <= kShortRatio * u0;
   if (short_step) {
@@ -209,7 +209,7 @@ IgfResult igf_position_delta_detailed(double alpha, double lambda, double theta0
   const double delta = theta1 - theta0;
   if (delta == 0) return out;
 
-  if (lambda == 0 || alpha == 1) {  // unit circle; logarithmic spiral (MATH.md §1.1)
+  if (lambda == 0 || alpha == 1) {  // unit circle; logarithmic spiral (docs/math.md §1.1)
     const cplx w = lambda == 0 ? kI : cplx(lambda, 1.0);
     res.value = std::exp(w * theta0) * delta * expm1c_ratio(w * delta);
     res.error_estimate = 8 * kEps * std::abs(res.value) * (1 + std::abs(w * theta0) + std::abs(w * delta));

@@ -1,6 +1,6 @@
 #pragma once
 // Closed form of the position of a standard-form planar LA curve through the upper incomplete
-// gamma function (MATH.md §1.1; Ziatdinov–Yoshida–Kim as cited by 002 ref. [17]):
+// gamma function (docs/math.md §1.1; Ziatdinov–Yoshida–Kim as cited by 002 ref. [17]):
 //
 //   C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ = (e^{−i/k}/k) (ik)^a [Γ(a, −i/k) − Γ(a, −iU/k)],
 //   k = (α−1)Λ, a = α/(α−1), U = 1 + kθ, ρ(θ) = U^{1/(α−1)};   α = 1: (e^{(Λ+i)θ} − 1)/(Λ + i).
@@ -62,7 +62,7 @@ struct IgfResult {
 };
 
 /// C(θ1) − C(θ0) of the standard-form curve with slope α and Λ ≥ 0. InputError for non-finite
-/// input, Λ < 0, or θ outside the open θ domain (MATH.md §1).
+/// input, Λ < 0, or θ outside the open θ domain (docs/math.md §1).
 IgfResult igf_position_delta_detailed(double alpha, double lambda, double theta0, double theta1,
                                       const IgfOptions& options = {});
 

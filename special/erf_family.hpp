@@ -1,5 +1,5 @@
 #pragma once
-// Error-function family for the quadratic LA curves (MATH.md §4; 003 §2).
+// Error-function family for the quadratic LA curves (docs/math.md §4; 003 §2).
 //   erfi, Dawson D(x) = (√π/2) e^(−x²) erfi(x), erfcx(x) = e^(x²) erfc(x): libcerf;
 //   erf, erfc, erf⁻¹, erfc⁻¹: Boost.Math;
 //   erfi⁻¹ (two methods, selectable) and log-argument inverses: written here, because neither

@@ -5,7 +5,7 @@
 //
 // Written here by hand: Boost.Math's incomplete gamma takes real arguments only, and
 // libcerf has no incomplete gamma. Needed by the igf closed form of the planar LA curve
-// (MATH.md §1.1), where z is purely imaginary.
+// (docs/math.md §1.1), where z is purely imaginary.
 //
 // Regions (chosen per call; see docs/special_incomplete_gamma.md and detail/):
 //   series             |z| ≤ 1.5, or near the negative real axis (|z| + Re z ≤ 1) with |z| < 40:

@@ -1,5 +1,5 @@
 #pragma once
-// Planar log-aesthetic curve in standard form (MATH.md §1; 001 Table 1; 002 Eqs. 1–6):
+// Planar log-aesthetic curve in standard form (docs/math.md §1; 001 Table 1; 002 Eqs. 1–6):
 // reference point at the origin, tangent +x, ρ = 1 there, ρ increasing with s.
 // LCG: log(ρ ds/dρ) = α log ρ − log Λ, so ds/dρ = ρ^(α−1)/Λ. Λ = 0 is the unit circle.
 //
@@ -29,7 +29,7 @@ class LaCurve {
   double alpha() const { return alpha_; }
   double lambda() const { return lambda_; }
 
-  /// Open domains of θ and s (001 Table 1 as restated in MATH.md §1), computed once.
+  /// Open domains of θ and s (001 Table 1 as restated in docs/math.md §1), computed once.
   Interval theta_domain() const { return theta_domain_; }
   Interval s_domain() const { return s_domain_; }
   Interval domain(Parameter p) const { return p == Parameter::theta ? theta_domain() : s_domain(); }

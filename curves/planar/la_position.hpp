@@ -1,5 +1,5 @@
 #pragma once
-// Position on a standard-form planar LA curve (MATH.md §1; 002 Eqs. 7–8) with any
+// Position on a standard-form planar LA curve (docs/math.md §1; 002 Eqs. 7–8) with any
 // quadrature method of integrators/quadrature.hpp, or with a closed form (igf) that
 // satisfies LaClosedForm (integrators/quadrature.hpp); or chosen at run time (AnyQuadrature, integrators/registry.hpp).
 //   θ-form: C(θ) = ∫₀^θ ρ(ψ) e^{iψ} dψ     s-form: C(s) = ∫₀^s e^{iθ(u)} du

@@ -77,7 +77,7 @@ double QuadraticLaCurve::s_at_kappa(double kappa) const {
 double QuadraticLaCurve::ds_dkappa(double kappa) const {
   if (!(kappa > 0) || !std::isfinite(kappa)) throw_input_error(kFunction, "kappa", kappa, "(0, inf)");
   const double u = std::log(kappa);
-  return -std::exp(s_integral_.exponent(u) - u) / lambda_;  // MATH.md §4
+  return -std::exp(s_integral_.exponent(u) - u) / lambda_;  // docs/math.md §4
 }
 
 double QuadraticLaCurve::lcg(double log_rho) const {

@@ -1,5 +1,5 @@
 #pragma once
-// Quadratic log-aesthetic curve (003; MATH.md §4 corrects its Eqs. 4.2 and 4.6): the LCG is
+// Quadratic log-aesthetic curve (003; docs/math.md §4 corrects its Eqs. 4.2 and 4.6): the LCG is
 // the parabola log(ρ ds/dρ) = γ(log ρ)² + α log ρ − log Λ. In u = log κ (standard form:
 // κ = 1, θ = 0, position 0 at s = 0; κ decreases with s):
 //   ds/du = −e^(E(u))/Λ,  E(u) = γu² − αu,     s(u) = −F_α(u)/Λ,
@@ -10,7 +10,7 @@
 // beyond the double range (|α|/(2√−γ) > 26.6) is reported as ±inf.
 //
 // Domain: s ∈ (s(κ→∞), s(κ→0)). γ < 0 has both ends finite (003 property 3); γ = 0 is the LA
-// curve of MATH.md §1; γ > 0 is unbounded both ways. At a finite s(κ→0) the curvature reaches
+// curve of docs/math.md §1; γ > 0 is unbounded both ways. At a finite s(κ→0) the curvature reaches
 // 0 (inflection). With QuadraticOptions::through_inflection the curve continues past it
 // point-symmetrically (C(s_i + t) − C(s_i) = C(s_i) − C(s_i − t): θ(s_i + t) = θ(s_i − t),
 // signed κ(s_i + t) = −κ(s_i − t), the LCG of |κ| is the same parabola) up to
@@ -63,7 +63,7 @@ class QuadraticLaCurve {
   double lambda() const { return lambda_; }
   const QuadraticOptions& options() const { return options_; }
 
-  /// Arc length at κ → ∞ (lower end) and at κ → 0 (upper end), MATH.md §4 (erfcx forms).
+  /// Arc length at κ → ∞ (lower end) and at κ → 0 (upper end), docs/math.md §4 (erfcx forms).
   double s_at_infinite_kappa() const { return s_lo_; }
   double s_at_zero_kappa() const { return s_hi_; }
   /// Open s domain of the curve (extended past the inflection when the option is on).
@@ -81,7 +81,7 @@ class QuadraticLaCurve {
   double theta_difference(double u0, double u1) const { return -theta_integral_.between(u0, u1) / lambda_; }
   /// s(κ), κ > 0.
   double s_at_kappa(double kappa) const;
-  /// ds/dκ = −κ^(−α + γ log κ − 1)/Λ (MATH.md §4), κ > 0.
+  /// ds/dκ = −κ^(−α + γ log κ − 1)/Λ (docs/math.md §4), κ > 0.
   double ds_dkappa(double kappa) const;
   /// The LCG parabola: log(ρ ds/dρ) = γ(log ρ)² + α log ρ − log Λ.
   double lcg(double log_rho) const;

@@ -2,7 +2,7 @@
 // Position on a quadratic LA curve by any quadrature method (template on QuadratureMethod),
 // or run-time by name (AnyQuadrature from integrators/registry.hpp). s-form:
 //   C(s) = ∫₀^s e^(iθ(t)) dt,  θ(t) from κ(t) (quadratic_curve.hpp),
-// whose integrand has modulus 1 and stays smooth through the inflection (MATH.md §1's reason
+// whose integrand has modulus 1 and stays smooth through the inflection (docs/math.md §1's reason
 // for the s-form). The tangent is (cos θ, sin θ) of the returned point. A κ(s) status other
 // than ok at a returned point (003's hybrid inverse outside its range) is merged into that
 // point's status; inside the quadrature the integrand cannot report it.

@@ -1,5 +1,5 @@
 #pragma once
-// Frenet–Serret integration of an LA space curve (MATH.md §3; 000 §2.1):
+// Frenet–Serret integration of an LA space curve (docs/math.md §3; 000 §2.1):
 //   P' = T, T' = κN, N' = −κT + τB, B' = −τN
 // with a method of the ODE registry (OdeOptions, integrators/ode_registry.hpp): over a 12-vector
 // state (P, T, N, B) with the project's steppers (integrators/ode.hpp), adaptive Dormand–Prince 5(4)

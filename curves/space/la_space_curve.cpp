@@ -118,7 +118,7 @@ JointContinuation continue_at_joint(double alpha0, double alpha1, double beta0, 
   if (!(j.lambda1 > 0) || !std::isfinite(j.lambda1) || !std::isfinite(j.omega1)) return j;
   j.s_c = LaCurve(alpha1, j.lambda1).s_at_log_rho_unchecked(log_rho_c);  // 000 Eq. (17)
   // ν1 from μ(s_c) = μc: ν1^β1 = μc^β1 ∓ Ω1β1 s_c (type 1: −, type 2: +), 000 Eqs. (17)–(18)
-  // corrected (MATH.md §3); written as log ν1 = log μc + log(1 + β1 x)/β1, x = ∓Ω1 s_c μc^(−β1).
+  // corrected (docs/math.md §3); written as log ν1 = log μc + log(1 + β1 x)/β1, x = ∓Ω1 s_c μc^(−β1).
   const double sign = type == TorsionType::type1 ? -1.0 : 1.0;
   const double x = sign * j.omega1 * j.s_c * std::exp(-beta1 * log_mu_c);
   if (!(1.0 + beta1 * x > 0) || !std::isfinite(x)) return j;

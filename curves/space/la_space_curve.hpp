@@ -1,5 +1,5 @@
 #pragma once
-// Log-aesthetic space curve in standard form (000 §2.1, Eqs. (3)–(5); MATH.md §3):
+// Log-aesthetic space curve in standard form (000 §2.1, Eqs. (3)–(5); docs/math.md §3):
 // P(0) = 0, T(0) = e_x, N(0) = e_y, B(0) = e_z, ρ(0) = 1, μ(0) = ν.
 //   LCG  log(ρ ds/dρ) = α log ρ − log Λ     ρ(s) = (1 + αΛs)^(1/α)          (α = 0: e^(Λs))
 //   LTG  log(μ ds/dμ) = β log μ − log Ω     type 1: μ(s) = (ν^β + Ωβs)^(1/β)  (β = 0: ν e^(Ωs))
@@ -48,7 +48,7 @@ class LaSpaceCurve {
   /// dκ/ds = −Λ ρ^(−1−α), since dρ/ds = Λ ρ^(1−α) (000 Eqs. (1), (3)).
   double dkappa_ds(double s) const { return -lambda() * std::exp(-(1.0 + alpha()) * log_rho(s)); }
 
-  /// Total turning ∫₀^s κ du of the tangent (the planar θ(s) of MATH.md §1), s in s_range().
+  /// Total turning ∫₀^s κ du of the tangent (the planar θ(s) of docs/math.md §1), s in s_range().
   /// InputError naming "s" where the value is not a finite double (extreme laws, e.g. Λ near
   /// DBL_MAX, where k·s overflows): never NaN.
   double turning(double s) const;
@@ -60,7 +60,7 @@ class LaSpaceCurve {
   double torsion_turning(double s) const;
   double s_at_torsion_turning(double phi) const;
 
-  /// Arc length at which ρ reaches exp(log_rho) (000 Eq. (17); MATH.md §3 s_c). Requires Λ > 0;
+  /// Arc length at which ρ reaches exp(log_rho) (000 Eq. (17); docs/math.md §3.3 s_c). Requires Λ > 0;
   /// InputError naming "log_rho" unless it is finite and the arc length lies in s_range().
   double s_at_log_rho(double log_rho) const;
 
@@ -77,7 +77,7 @@ class LaSpaceCurve {
 };
 
 /// Parameters of the second segment of a compound curve from the LCG/LTG continuity at the joint
-/// (000 Eqs. (11), (16), (17), (18) with the typo of the first ν1 line corrected, MATH.md §3).
+/// (000 Eqs. (11), (16), (17), (18) with the typo of the first ν1 line corrected, docs/math.md §3).
 struct JointContinuation {
   double lambda1 = 0, omega1 = 0, s_c = 0, nu1 = 0;
   bool valid = false;  ///< false when ν1 has no positive real value (type 1: μc^β1 − Ω1β1 s_c ≤ 0)

@@ -1,4 +1,4 @@
-// G1 and compound-rhythm LA space segments (constructions/space_segment; 000 §2.2, §4; MATH.md §3).
+// G1 and compound-rhythm LA space segments (constructions/space_segment; 000 §2.2, §4; docs/math.md §3).
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -1,4 +1,4 @@
-// Quadratic LA curve (003, MATH.md §4): closed forms and κ(s) against the mpmath reference
+// Quadratic LA curve (003, docs/math.md §4): closed forms and κ(s) against the mpmath reference
 // (tests/reference/quadratic.py → quadratic.csv), identities, limits, bad input.
 #include <gtest/gtest.h>
 
@@ -39,7 +39,7 @@ double s_condition(const QuadraticLaCurve& c, double u) {
   return std::abs(u) * std::abs(c.gamma() * u - c.alpha()) + std::abs(c.gamma()) * u * u + 1.0;
 }
 
-// Size of the constant term in the closed form of s (MATH.md §4), which sets the absolute
+// Size of the constant term in the closed form of s (docs/math.md §4), which sets the absolute
 // rounding error of s: D(x0)/(√γ Λ) for γ > 0, (√π/2) erfcx(|y0|)/(√−γ Λ) for γ < 0, 1/|αΛ| for γ = 0.
 double constant_term_of_s(const QuadraticLaCurve& c) {
   const double a = c.alpha(), g = c.gamma(), l = c.lambda();
@@ -172,7 +172,7 @@ TEST(QuadraticCurve, DsDkappaIdentityAndLcgParabola) {
     for (double u : {-2.0, -0.5, 0.0, 0.3, 1.7}) {
       const double kappa = std::exp(u);
       const double ds = c.ds_dkappa(kappa);
-      // MATH.md §4: ds/dκ = −κ^(−α + γ log κ − 1)/Λ, here by pow directly.
+      // docs/math.md §4: ds/dκ = −κ^(−α + γ log κ − 1)/Λ, here by pow directly.
       const double direct = -std::pow(kappa, -p[0] + p[1] * u - 1.0) / p[2];
       EXPECT_NEAR(ds / direct, 1.0, 1e-13) << label(p[0], p[1], p[2], u);
       // Central difference of the closed form s(κ) (step h κ, h = 1e-5: error ~1e-9 relative).

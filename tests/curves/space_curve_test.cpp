@@ -19,7 +19,7 @@ namespace lac {
 namespace {
 namespace tol = test::space_tol;
 
-// MATH.md §3 tables written out case by case (independent of the graph-law form in the library).
+// docs/math.md §3.1 tables written out case by case (independent of the graph-law form in the library).
 double rho_table(double a, double l, double s) { return a == 0 ? std::exp(l * s) : std::pow(1 + a * l * s, 1 / a); }
 double mu_table(double b, double o, double nu, TorsionType ty, double s) {
   const double sg = ty == TorsionType::type1 ? 1 : -1;
@@ -47,7 +47,7 @@ TEST(SpaceCurveLaws, RhoMuMatchTheTablesOfMathMd) {
       worst = std::max(worst, std::abs(cv.mu(s) / mu_table(c.b, c.o, c.nu, c.ty, s) - 1));
     }
   }
-  std::printf("worst relative deviation of rho, mu from the MATH.md tables: %.2e\n", worst);
+  std::printf("worst relative deviation of rho, mu from the docs/math.md §3.1 tables: %.2e\n", worst);
   EXPECT_LE(worst, tol::kLaw);
 }
 
@@ -88,7 +88,7 @@ TEST(SpaceCurveLaws, TurningIsTheIntegralOfCurvatureAndInverts) {
 }
 
 TEST(SpaceCurveLaws, JointContinuationKeepsRhoMuAndTheirSlopes) {
-  // MATH.md §3: ρ, μ and dρ/ds, dμ/ds continuous (LCG, LTG continuous), including α1 = 0, β1 = 0.
+  // docs/math.md §3: ρ, μ and dρ/ds, dμ/ds continuous (LCG, LTG continuous), including α1 = 0, β1 = 0.
   struct J {
     double a0, a1, b0, b1;
     TorsionType ty;

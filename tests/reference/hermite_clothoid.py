@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Reference triple clothoids (alpha = -1) for the G2 Hermite tests (004 §3, MATH.md §5).
+"""Reference triple clothoids (alpha = -1) for the G2 Hermite tests (004 §3, docs/math.md §5).
 
 Independent of the C++ code: positions by Fresnel integrals (mpmath.fresnels/fresnelc),
 the three conditions solved by mpmath.findroot at 40 digits.

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference position differences C(theta1) - C(theta0) of standard-form planar LA curves, for the
-igf integrator (MATH.md §1, §1.1). Run: /usr/bin/python3 tests/reference/igf_reference.py
+igf integrator (docs/math.md §1, §1.1). Run: /usr/bin/python3 tests/reference/igf_reference.py
 (writes igf_reference.csv next to this file; a few minutes).
 
 C(theta1) - C(theta0) = ∫_theta0^theta1 rho(psi) e^{i psi} dpsi, rho = exp(Lambda psi log1p(k psi)/(k psi)),

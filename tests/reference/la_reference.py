@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference positions of standard-form planar LA curves (MATH.md §1) at 40 digits.
+"""Reference positions of standard-form planar LA curves (docs/math.md §1) at 40 digits.
 
 Writes la_reference.csv next to this file. Run: /usr/bin/python3 tests/reference/la_reference.py
 
@@ -7,11 +7,11 @@ For each (alpha, lambda, theta) the position C(theta) = ∫_0^theta rho(psi) e^{
 computed by mpmath tanh-sinh quadrature at mp.dps = 40, on sub-intervals where theta moves by
 at most 0.5 rad and log(rho) by at most 0.5 (so steep growth toward an open end of the
 domain is resolved). It is cross-checked against an independent evaluation: the closed form
-through the incomplete gamma function (mpmath.gammainc, MATH.md §1.1) for alpha != 1, the
+through the incomplete gamma function (mpmath.gammainc, docs/math.md §1.1) for alpha != 1, the
 elementary form for alpha = 1, and the s-form quadrature ∫_0^s e^{i theta(u)} du where the
 order a = alpha/(alpha-1) exceeds 12 in magnitude (alpha near 1, where mpmath.gammainc is very
 slow); column `crosscheck` is |C_quad - C_other| / |C_quad|.
-s and rho come from the closed forms of MATH.md §1 at the same precision.
+s and rho come from the closed forms of docs/math.md §1 at the same precision.
 
 Cases: alpha from -100 to 100 (0 and 1 included, near 1 from both sides), lambda from 1e-3
 to 100, theta at 0.95 and 0.5 of the finite bound of the theta domain (capped at |theta| <= 30

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values of the quadratic LA curve (MATH.md §4) at high precision.
+"""Reference values of the quadratic LA curve (docs/math.md §4) at high precision.
 
 Writes quadratic.csv next to this file. Run: /usr/bin/python3 tests/reference/quadratic.py
 

@@ -91,7 +91,7 @@ ExpQuadraticIntegral::ExpQuadraticIntegral(double alpha, double gamma) : alpha_(
     const double c = kSqrtPi / (2.0 * root_);
     erfcx_plus_ = special::erfcx(center_);
     erfcx_minus_ = special::erfcx(-center_);  // +inf beyond |y0| ≈ 26.6: a true overflow of F(−∞)
-    limit_plus_ = c * erfcx_plus_;            // F(+∞), MATH.md §4 bounds in erfcx form
+    limit_plus_ = c * erfcx_plus_;            // F(+∞), docs/math.md §4.4 bounds in erfcx form
     limit_minus_ = -c * erfcx_minus_;         // F(−∞)
     base_ = center_ >= 0 ? erfcx_plus_ : erfcx_minus_;
   } else {
@@ -187,7 +187,7 @@ double ExpQuadraticIntegral::start_ours(double target, int& iterations) const {
 }
 
 InverseSolution ExpQuadraticIntegral::inverse_003(double target) const {
-  // 003 Eq. (4.6) with MATH.md §4's sign correction, unscaled: e^(±α²/(4γ)) and the hybrid
+  // 003 Eq. (4.6) with docs/math.md §4's sign correction, unscaled: e^(±α²/(4γ)) and the hybrid
   // inverses bounded to |z| ≤ 26 (erfi) and |z| ≤ 5 (erf), as the paper does.
   InverseSolution out;
   const double lambda_s = -target;  // Λ s = −F

@@ -1,6 +1,6 @@
 #pragma once
 // F(u) = ∫₀^u e^(γt² − αt) dt and its inverse, the one integral behind the quadratic LA curve
-// (MATH.md §4): s(u) = −F_α(u)/Λ and θ(u) = −F_(α−1)(u)/Λ with u = log κ.
+// (docs/math.md §4): s(u) = −F_α(u)/Λ and θ(u) = −F_(α−1)(u)/Λ with u = log κ.
 //
 // Evaluation (no overflow of e^(∓α²/(4γ)), no cancellation near u = 0):
 //   |γ|u² + |αu| ≤ 3   Taylor series of e^(E) about u/2, even terms only (midpoint_series(); |E| ≤ 3 there).
