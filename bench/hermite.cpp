@@ -1,4 +1,4 @@
-// G2 Hermite (004 §3) and S-curve (004 §2.5) timings. Targets (issue 9): G2 ≤ 1 ms median
+// G2 Hermite (004 §3) and S-curve (004 §2.5) timings. Targets: G2 ≤ 1 ms median
 // including the initial estimate; S-curve ≤ 50 µs. Each iteration solves the next problem of
 // a fixed random set (same distribution as experiments/g2_random.cpp), so the time is a mean
 // over the set; counters report the share solved. The G2 rows run without the grid fallback
@@ -17,7 +17,6 @@
 namespace {
 
 using namespace lac;
-using namespace lac::hermite;
 
 constexpr double kAlphas[] = {-0.5, -1.0, -2.0};
 
@@ -43,8 +42,8 @@ void run_g2(benchmark::State& state, G2Solver solver, G2Start start, bool verify
   long solved = 0, calls = 0;
   for (auto _ : state) {
     const G2Result r = solve_g2(set[i++ % set.size()], o);
-    benchmark::DoNotOptimize(r.length);
-    solved += usable(r.status);
+    benchmark::DoNotOptimize(r.info.h);
+    solved += r.usable();
     ++calls;
   }
   state.counters["alpha"] = kAlphas[state.range(0)];
@@ -67,20 +66,20 @@ BENCHMARK(BM_G2_paper_grid)->Arg(0)->Unit(benchmark::kMillisecond);
 // The initial estimates alone (normalized problems of the same set).
 void run_start(benchmark::State& state, bool grid) {
   const auto set = g2_set(kAlphas[state.range(0)]);
-  std::vector<hermite::detail::NormalizedG2> norm;
+  const AnyQuadrature method = GaussLegendre{};  // the estimates integrate with their own rule; unused
+  std::vector<detail::G2System> norm;
   for (const auto& p : set) {
-    hermite::detail::NormalizedG2 n;
-    n.law = {p.alpha, p.start.kappa < 0 ? -1.0 : 1.0};
-    n.phi_s = p.start.theta;
-    n.phi_e = p.end.theta;
-    n.kappa_s = p.start.kappa;
-    n.kappa_e = p.end.kappa;
-    norm.push_back(n);
+    norm.push_back({{p.alpha, p.start.kappa < 0 ? -1.0 : 1.0},
+                    p.start.theta,
+                    p.end.theta,
+                    p.start.kappa,
+                    p.end.kappa,
+                    detail::TrialIntegrator(method)});
   }
   size_t i = 0;
   for (auto _ : state) {
     const auto& n = norm[i++ % norm.size()];
-    const auto e = grid ? hermite::detail::bezier_grid_start(n, n.law.alpha) : hermite::detail::fast_start(n);
+    const auto e = grid ? detail::g2_bezier_grid_start(n) : detail::g2_fast_start(n);
     benchmark::DoNotOptimize(e.h);
   }
 }
@@ -100,7 +99,7 @@ std::vector<std::array<std::complex<double>, 4>> s_set() {
                                                 std::complex<double>(1, 0) - std::polar(1.0 / 3, b),
                                                 std::complex<double>(1, 0)};
     const auto r = solve_s_curve(P, -1.0);
-    if (r.shape == SCurveShape::s_shaped && r.status == Status::ok) v.push_back(P);
+    if (r.info.shape == SCurveShape::s_shaped && r.summary.status == Status::ok) v.push_back(P);
   }
   return v;
 }
@@ -112,14 +111,14 @@ void run_s(benchmark::State& state, RootMethod m, bool verify) {
   static const auto set = s_set();
   const double alpha = kSAlphas[state.range(0)];
   SCurveOptions o;
-  o.root = m;
+  o.solver = m;
   o.verify = verify;
   size_t i = 0;
   long solved = 0, calls = 0;
   for (auto _ : state) {
     const SCurveResult r = solve_s_curve(set[i++ % set.size()], alpha, o);
-    benchmark::DoNotOptimize(r.lambda);
-    solved += r.status == Status::ok;
+    benchmark::DoNotOptimize(r.info.lambda);
+    solved += r.summary.status == Status::ok;
     ++calls;
   }
   state.counters["alpha"] = alpha;

@@ -5,6 +5,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "lac/common/error.hpp"
@@ -12,7 +13,7 @@
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
 
-namespace lac::hermite {
+namespace lac {
 namespace {
 
 using Points = std::array<std::complex<double>, 4>;
@@ -20,33 +21,37 @@ constexpr double kMax = DBL_MAX;
 
 bool finite(std::complex<double> z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
 
-void expect_finite_samples(const std::vector<CurveSample>& pts) {
-  for (const auto& q : pts) {
-    EXPECT_TRUE(finite(q.position)) << "S " << q.S;
-    EXPECT_TRUE(std::isfinite(q.s)) << "S " << q.S;
-    EXPECT_TRUE(std::isfinite(q.theta)) << "S " << q.S;
-    EXPECT_TRUE(std::isfinite(q.kappa)) << "S " << q.S;
+void expect_finite_samples(const std::vector<PositionResult>& pts) {
+  for (const auto& p : pts) {
+    const CurvePoint& q = p.point;
+    EXPECT_TRUE(finite(q.position)) << "s " << q.s;
+    EXPECT_TRUE(std::isfinite(q.s)) << "s " << q.s;
+    EXPECT_TRUE(std::isfinite(q.theta)) << "s " << q.s;
+    EXPECT_TRUE(std::isfinite(q.kappa)) << "s " << q.s;
   }
 }
 
+// A residual the result reports is finite (an absent one, of a failed solve, counts as 0).
+bool finite_or_absent(const std::optional<double>& v) { return std::isfinite(v.value_or(0)); }
+
 // Every user-unit number of the result is finite; the samples too when the status is usable.
 void expect_finite(const SCurveResult& r) {
-  EXPECT_TRUE(std::isfinite(r.length));
-  EXPECT_TRUE(std::isfinite(r.lambda));
-  EXPECT_TRUE(std::isfinite(r.inflection_s));
-  EXPECT_TRUE(std::isfinite(r.residual_position));
-  EXPECT_TRUE(std::isfinite(r.residual_angle));
-  if (usable(r.status)) expect_finite_samples(r.polyline(33));
+  EXPECT_TRUE(std::isfinite(r.curve.length()));
+  EXPECT_TRUE(std::isfinite(r.info.lambda));
+  EXPECT_TRUE(finite_or_absent(r.info.inflection_s));
+  EXPECT_TRUE(finite_or_absent(r.summary.residuals.position));
+  EXPECT_TRUE(finite_or_absent(r.summary.residuals.angle));
+  if (r.usable()) expect_finite_samples(r.curve.sample(33));
 }
 
 void expect_finite(const G2Result& r) {
-  EXPECT_TRUE(std::isfinite(r.length));
-  EXPECT_TRUE(std::isfinite(r.residual_position));
-  EXPECT_TRUE(std::isfinite(r.residual_angle));
-  EXPECT_TRUE(std::isfinite(r.residual_curvature));
-  if (!usable(r.status)) return;
-  expect_finite_samples(r.curve.polyline(33));
-  for (const auto& c : r.curve.coefficients()) {
+  EXPECT_TRUE(std::isfinite(r.curve.length()));
+  EXPECT_TRUE(finite_or_absent(r.summary.residuals.position));
+  EXPECT_TRUE(finite_or_absent(r.summary.residuals.angle));
+  EXPECT_TRUE(finite_or_absent(r.summary.residuals.curvature));
+  if (!r.usable()) return;
+  expect_finite_samples(r.curve.sample(33));
+  for (const auto& c : r.info.coefficients) {
     EXPECT_TRUE(std::isfinite(c.c0) && std::isfinite(c.c1) && std::isfinite(c.c2));
   }
 }
@@ -67,10 +72,10 @@ TEST(HermiteRobustness, R10SCurveWithOverflowingLengthIsNotUsable) {
   const Points P{{{2, 2}, {10, kMax}, {10, 2.2e-308}, {kMax, 2}}};
   for (RootMethod m : {RootMethod::toms748, RootMethod::bisection}) {
     SCurveOptions o;
-    o.root = m;
+    o.solver = m;
     const SCurveResult r = solve_s_curve(P, -2.561767578125, o);
-    EXPECT_FALSE(usable(r.status)) << to_string(r.status);
-    EXPECT_NE(r.message.find("double range"), std::string::npos) << r.message;
+    EXPECT_FALSE(r.usable()) << to_string(r.summary.status);
+    EXPECT_NE(r.summary.message.find("double range"), std::string::npos) << r.summary.message;
     expect_finite(r);
   }
 }
@@ -92,16 +97,16 @@ TEST(HermiteRobustness, SCurveIsSimilarityInvariantAtExtremeScales) {
   // The same polygon at scale 1, 1e-300 and 1e300 (and shifted): same Λ, length scaled.
   const Points base{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}};
   const SCurveResult ref = solve_s_curve(base, -1.5);
-  ASSERT_EQ(ref.status, Status::ok) << ref.message;
+  ASSERT_EQ(ref.summary.status, Status::ok) << ref.summary.message;
   for (double scale : {1e-300, 1e300, 0.2 * kMax}) {
     for (std::complex<double> shift : {std::complex<double>(0, 0), std::complex<double>(1.5, -2) * scale}) {
       Points P;
       for (size_t k = 0; k < 4; ++k) P[k] = base[k] * scale + shift;
       const SCurveResult r = solve_s_curve(P, -1.5);
-      ASSERT_EQ(r.status, Status::ok) << "scale " << scale << ": " << r.message;
-      EXPECT_NEAR(r.lambda, ref.lambda, 1e-12 * ref.lambda);
-      EXPECT_NEAR(r.length / scale, ref.length, 1e-12 * ref.length);
-      EXPECT_LE(r.residual_position / (3 * scale), 1e-10);
+      ASSERT_EQ(r.summary.status, Status::ok) << "scale " << scale << ": " << r.summary.message;
+      EXPECT_NEAR(r.info.lambda, ref.info.lambda, 1e-12 * ref.info.lambda);
+      EXPECT_NEAR(r.curve.length() / scale, ref.curve.length(), 1e-12 * ref.curve.length());
+      EXPECT_LE(*r.summary.residuals.position / (3 * scale), 1e-10);
       expect_finite(r);
     }
   }
@@ -135,14 +140,14 @@ TEST(HermiteRobustness, G2ReachingBeyondTheDoubleRangeIsNotUsable) {
   for (const G2Problem& p : {G2Problem{{{-kMax, 0}, 0.6, 0.5 / kMax}, {{0, 0}, -0.6, -0.3 / kMax}, -0.5},
                              G2Problem{{{0, 0}, 1.5, 0}, {{0.9 * kMax, 0}, -1.5, 0}, -0.5}}) {
     const G2Result r = solve_g2(p);
-    EXPECT_EQ(r.status, Status::numerical_failure) << r.message;
-    EXPECT_NE(r.message.find("double range"), std::string::npos) << r.message;
+    EXPECT_EQ(r.summary.status, Status::numerical_failure) << r.summary.message;
+    EXPECT_NE(r.summary.message.find("double range"), std::string::npos) << r.summary.message;
     expect_finite(r);
   }
   // The same shape at a representable scale solves, with finite results.
   const G2Result ok = solve_g2({{{0, 0}, 0.6, 0.5e-300}, {{1e300, 0}, -0.6, -0.3e-300}, -0.5});
-  EXPECT_EQ(ok.status, Status::ok) << ok.message;
-  EXPECT_LE(ok.residual_position / 1e300, 1e-10);
+  EXPECT_EQ(ok.summary.status, Status::ok) << ok.summary.message;
+  EXPECT_LE(ok.summary.residuals.position.value_or(HUGE_VAL) / 1e300, 1e-10);
   expect_finite(ok);
 }
 
@@ -158,11 +163,12 @@ TEST(HermiteRobustness, SCurveWithNonFiniteResidualIsNotUsable) {
     SUCCEED() << "rejected: " << e.what();
     return;
   }
-  if (usable(r.status)) {
-    EXPECT_TRUE(std::isfinite(r.residual_position)) << r.residual_position;
-    EXPECT_TRUE(std::isfinite(r.residual_angle)) << r.residual_angle;
+  if (r.usable()) {
+    const Residuals& e = r.summary.residuals;
+    EXPECT_TRUE(e.position && std::isfinite(*e.position)) << e.position.value_or(NAN);
+    EXPECT_TRUE(e.angle && std::isfinite(*e.angle)) << e.angle.value_or(NAN);
   } else {
-    EXPECT_FALSE(r.message.empty());
+    EXPECT_FALSE(r.summary.message.empty());
   }
 }
 
@@ -196,9 +202,9 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
     o.grid_fallback = false;  // the Bézier-grid start alone scores 10^4 quintics (2e5 evaluations)
     const G2Result r = solve_g2(p, o);
     SCOPED_TRACE(std::string(to_string(solver)));
-    EXPECT_FALSE(usable(r.status)) << r.message;
-    EXPECT_FALSE(r.message.empty());
-    EXPECT_LT(r.evaluations, 10'000) << r.message;  // was ~5e6 integrand evaluations for ceres
+    EXPECT_FALSE(r.usable()) << r.summary.message;
+    EXPECT_FALSE(r.summary.message.empty());
+    EXPECT_LT(r.summary.evaluations, 10'000) << r.summary.message;  // was ~5e6 integrand evaluations for ceres
     expect_finite(r);
   }
 }
@@ -217,8 +223,8 @@ TEST(HermiteRobustness, G2WithSubnormalEndCurvatureIsVerified) {
     EXPECT_NO_THROW(r = solve_g2(p, o));
     expect_finite(r);
     if (solver == G2Solver::paper) {
-      EXPECT_EQ(r.status, Status::ok) << r.message;
-      EXPECT_LE(r.residual_position, 1e-10 * std::abs(p.end.position - p.start.position));
+      EXPECT_EQ(r.summary.status, Status::ok) << r.summary.message;
+      EXPECT_LE(r.summary.residuals.position.value_or(HUGE_VAL), 1e-10 * std::abs(p.end.position - p.start.position));
     }
   }
 }
@@ -242,4 +248,4 @@ TEST(HermiteRobustness, G2WithSubnormalAlphaThrowsNamingAlpha) {
 }
 
 }  // namespace
-}  // namespace lac::hermite
+}  // namespace lac
