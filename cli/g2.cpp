@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/quadrature_args.hpp"
 #include "lac/common/error.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 
@@ -13,6 +14,7 @@ struct G2Args {
   std::string p0, p1;
   double theta0 = 0, theta1 = 0, kappa0 = 0, kappa1 = 0, alpha = -1;
   std::string solver = "newton", start = "fast";
+  QuadratureArgs quadrature{.integrator = "gauss-legendre"};
   bool no_fallback = false;
   int points = 0;
   std::string* format = nullptr;
@@ -27,6 +29,7 @@ void run(const G2Args& a) {
   G2Options o;
   o.solver = parse_g2_solver(a.solver);
   o.start = parse_g2_start(a.start);
+  o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   o.grid_fallback = !a.no_fallback;
   if (a.points < 0 || a.points == 1) throw_input_error("lac g2", "points", a.points, "0 or [2, inf)");
   const G2Result r = solve_g2(pr, o);
@@ -42,6 +45,7 @@ void run(const G2Args& a) {
     if (!sum.message.empty()) j["message"] = sum.message;
     j["alpha"] = a.alpha;
     j["solver"] = sum.solver;
+    j["integrator"] = describe(o.integrator);
     j["start"] = std::string(to_string(r.info.start_used));
     j["length"] = r.curve.length();
     j["residual_position"] = shown(sum.residuals.position);
@@ -87,7 +91,7 @@ void run(const G2Args& a) {
     return;
   }
   std::cout << "status " << to_string(sum.status) << (sum.message.empty() ? "" : " (" + sum.message + ")") << "\n"
-            << "solver " << sum.solver << "\n"
+            << "solver " << sum.solver << ", integrator " << describe(o.integrator) << "\n"
             << "length " << r.curve.length() << "\nresiduals position " << shown(sum.residuals.position) << ", angle "
             << shown(sum.residuals.angle) << ", curvature " << shown(sum.residuals.curvature) << "\niterations "
             << sum.iterations << ", " << sum.seconds << " s\n";
@@ -115,6 +119,7 @@ void setup(CLI::App& app) {
   sub->add_option("--kappa1", a->kappa1, "Signed curvature at the end")->required();
   sub->add_option("--alpha", a->alpha, "Slope of the LCG, one for the three segments, [-5, 5]")->capture_default_str();
   sub->add_option("--solver", a->solver, solver_names() + " (N-D registry, or 004's paper)")->capture_default_str();
+  add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--start", a->start, "Initial estimate: fast | bezier-grid")->capture_default_str();
   sub->add_flag("--no-fallback", a->no_fallback, "Do not retry from the Bezier-grid start when the fast start fails");
   sub->add_option("--points", a->points, "Number of curve points to print (0: none)")->capture_default_str();

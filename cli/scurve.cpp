@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/quadrature_args.hpp"
 #include "lac/common/error.hpp"
 #include "lac/constructions/s_curve.hpp"
 
@@ -12,7 +13,8 @@ namespace {
 struct SCurveArgs {
   std::string points;
   double alpha = -1;
-  std::string root = "toms748";
+  std::string solver = "toms748";
+  QuadratureArgs quadrature{.integrator = "gauss-legendre"};
   int points_out = 0;
   std::string* format = nullptr;
 };
@@ -26,7 +28,8 @@ void run(const SCurveArgs& a) {
   std::array<std::complex<double>, 4> P;
   for (size_t k = 0; k < 4; ++k) P[k] = {p[k][0], p[k][1]};
   SCurveOptions o;
-  o.solver = parse_root_method(a.root);
+  o.solver = parse_root_method(a.solver);
+  o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   if (a.points_out < 0 || a.points_out == 1)
     throw_input_error("lac scurve", "points-out", a.points_out, "0 or [2, inf)");
   const SCurveResult r = solve_s_curve(P, a.alpha, o);
@@ -42,6 +45,8 @@ void run(const SCurveArgs& a) {
     if (!sum.message.empty()) j["message"] = sum.message;
     j["shape"] = std::string(to_string(r.info.shape));
     j["alpha"] = a.alpha;
+    j["solver"] = sum.solver;
+    j["integrator"] = describe(o.integrator);
     j["lambda"] = r.info.lambda;
     j["length"] = r.curve.length();
     j["inflection_s"] = shown(r.info.inflection_s, -1.0);
@@ -93,8 +98,10 @@ void setup(CLI::App& app) {
                   "Control points \"x0,y0 x1,y1 x2,y2 x3,y3\": start tangent P0->P1, end tangent P2->P3")
       ->required();
   sub->add_option("--alpha", a->alpha, "Slope of the LCG, [-5, 0)")->capture_default_str();
-  sub->add_option("--root", a->root, "Root finder on Lambda: " + solver_names() + " (004: bisection)")
+  sub->add_option("--solver,--root", a->solver,
+                  "Root finder on Lambda: " + solver_names() + " (004: bisection); --root is the former name")
       ->capture_default_str();
+  add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--points-out", a->points_out, "Number of curve points to print (0: none)")->capture_default_str();
   a->format = add_format_option(*sub, {"json", "csv"});
   sub->callback([a] { run(*a); });
