@@ -12,6 +12,7 @@
 #include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
+#include "lac/constructions/detail/tangent_integral.hpp"
 
 namespace lac {
 namespace {
@@ -125,7 +126,7 @@ TEST(HermiteRobustness, G2WithCurvatureTimesChordOverflowingThrowsNamingKappa) {
       },
       "kappa1", "must be finite");
   // κ·|p1 − p0| = 1e300 is representable: no curve is found, and nothing non-finite escapes.
-  for (G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+  for (G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres, G2Solver::simplex}) {
     G2Options o;
     o.solver = solver;
     o.grid_fallback = false;
@@ -196,7 +197,7 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
   // The fuzz input: p0 far away (chord 1.4e75), so the normalized curvatures are ~2e66.
   const double e = -1.5996874935808592e-09;
   const G2Problem p{{{1.3853946644635051e+75, e}, e, e}, {{e, -1.8325181372347288e-09}, e, e}, -2.9775947041343898e-08};
-  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres, G2Solver::simplex}) {
     G2Options o;
     o.solver = solver;
     o.grid_fallback = false;  // the Bézier-grid start alone scores 10^4 quintics (2e5 evaluations)
@@ -215,7 +216,7 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
 TEST(HermiteRobustness, G2WithSubnormalEndCurvatureIsVerified) {
   const G2Problem p{{{2.046630859375, 3.141592653589793}, -1.51708984375, 5e-324},
                     {{-10, -1}, -5, -0.990478515625}, -1};
-  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres}) {
+  for (const G2Solver solver : {G2Solver::newton, G2Solver::paper, G2Solver::ceres, G2Solver::simplex}) {
     G2Options o;
     o.solver = solver;
     SCOPED_TRACE(std::string(to_string(solver)));
@@ -226,6 +227,35 @@ TEST(HermiteRobustness, G2WithSubnormalEndCurvatureIsVerified) {
       EXPECT_EQ(r.summary.status, Status::ok) << r.summary.message;
       EXPECT_LE(r.summary.residuals.position.value_or(HUGE_VAL), 1e-10 * std::abs(p.end.position - p.start.position));
     }
+  }
+}
+
+// Found while testing every integrator: igf, which integrates each side of a zero of q by its
+// standard form, threw on a zero of q within rounding of a segment's end (an empty part) and on a
+// subnormal |q| at an anchor (no standard form: ρ overflows), so the G2 problem above failed with
+// igf only. Both now go to the graded Gauss–Legendre rule, as the part next to every zero does.
+TEST(HermiteRobustness, IgfTrialIntegralsNearAZeroOfQAtAnEnd) {
+  const LaLaw clothoid{-1.0, 1.0};
+  for (double qa : {5.92879e-323, 1e-300, 1e-200, 1e-100}) {
+    for (double qb : {-2.0, 2.0, 1e-300, -1e-300}) {
+      const lac::detail::LinearQ seg{0.0, 0.25, qa, qb, 0.1};
+      IntegralResult<std::complex<double>> r;
+      ASSERT_NO_THROW(r = lac::detail::integrate_tangent_igf(clothoid, seg, Igf{})) << qa << " " << qb;
+      long evaluations = 0;
+      const auto gl = lac::detail::integrate_tangent(clothoid, seg, evaluations);
+      EXPECT_TRUE(usable(r.status)) << r.message;
+      EXPECT_LE(std::abs(r.value - gl), 1e-14) << "qa " << qa << " qb " << qb;
+    }
+  }
+  const G2Problem p{{{2.046630859375, 3.141592653589793}, -1.51708984375, 5e-324},
+                    {{-10, -1}, -5, -0.990478515625}, -1};
+  for (const auto& s : g2_solvers()) {
+    G2Options o;
+    o.solver = s.method;
+    o.integrator = Igf{};
+    const G2Result r = solve_g2(p, o);
+    EXPECT_EQ(r.summary.status, Status::ok) << s.name << ": " << r.summary.message;
+    expect_finite(r);
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/integrators/registry.hpp"
 #include "lac/curves/planar/detail/linear_q.hpp"
 
 namespace lac {
@@ -115,6 +116,60 @@ TEST(SCurve, BadInput) {
   const auto line = solve_s_curve(Points{{{0, 0}, {1, 0}, {2, 0}, {3, 0}}}, -1.0);
   EXPECT_EQ(line.summary.status, Status::no_solution);
   EXPECT_EQ(line.info.shape, SCurveShape::straight);
+}
+
+// Every quadrature method of the registry (the end point of every trial Λ and of the result) ×
+// every root finder of the 1-D registry: each solves (residuals ≤ accept = 1e-10 by tanh-sinh) and
+// gives the curve of the default (gauss-legendre, toms748). kAgreeTol = accept: the end direction
+// as a function of Λ has a slope of order 1, so Λ and the length follow the integrator's error of
+// the end point (rk4, h = 1e-3: ~1e-11); the printed worst deviation is the measured margin.
+constexpr double kAgreeTol = 1e-10;
+
+TEST(SCurve, EveryIntegratorAndRootFinderGiveTheSameCurve) {
+  struct Input {
+    Points P;
+    double alpha;
+  };
+  const Points S{{{0, 0}, {1, 0}, {2, 1.5}, {3, 1}}};
+  const std::vector<Input> inputs{{S, -0.5},
+                                  {S, -1.0},
+                                  {S, -2.0},
+                                  {S, -4.0},
+                                  {Points{{{0, 0}, {1, 0}, {2, -1}, {3, -1}}}, -1.0},           // mirrored
+                                  {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, -0.5},       // C-shaped
+                                  {Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}, -2.0}};        // C-shaped, reversed
+  double worst = 0;
+  std::string worst_what;
+  for (const Input& in : inputs) {
+    const SCurveResult base = solve_s_curve(in.P, in.alpha);
+    ASSERT_EQ(base.summary.status, Status::ok) << base.summary.message;
+    const double chord = std::abs(in.P[3] - in.P[0]);
+    for (const MethodInfo& m : quadrature_methods()) {
+      for (const RootMethodInfo& root : root_methods()) {
+        SCurveOptions o;
+        o.integrator = make_quadrature(m.name);
+        o.solver = root.method;
+        const SCurveResult r = solve_s_curve(in.P, in.alpha, o);
+        const std::string what =
+            "alpha " + std::to_string(in.alpha) + " " + std::string(m.name) + " " + std::string(root.name);
+        SCOPED_TRACE(what);
+        ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+        EXPECT_EQ(r.summary.integrator, m.name);
+        EXPECT_EQ(r.summary.solver, root.name);
+        EXPECT_EQ(r.info.shape, base.info.shape);
+        EXPECT_EQ(r.info.mirrored, base.info.mirrored);
+        EXPECT_EQ(r.info.reversed, base.info.reversed);
+        expect_interpolates(r, in.P);
+        const double d = std::max({std::abs(r.info.lambda - base.info.lambda) / base.info.lambda,
+                                   std::abs(r.curve.length() - base.curve.length()) / chord,
+                                   std::abs(at(r, 0.5).position - at(base, 0.5).position) / chord,
+                                   std::abs(r.info.inflection_s.value_or(0) - base.info.inflection_s.value_or(0)) / chord});
+        if (d > worst) worst = d, worst_what = what;
+        EXPECT_LE(d, kAgreeTol);
+      }
+    }
+  }
+  std::printf("worst deviation from gauss-legendre + toms748: %.3e (%s)\n", worst, worst_what.c_str());
 }
 
 TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
