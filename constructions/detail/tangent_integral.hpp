@@ -29,7 +29,9 @@ inline constexpr double kIgfMinU = 1e-3;
 
 /// The integral of trial data (possibly non-finite or not a valid segment) with one method of the
 /// registry, chosen once: NaN when the method fails (an unusable status, or data no segment has),
-/// which the solvers treat as a failed evaluation. gauss-legendre is the fast path of
+/// which the solvers treat as a failed evaluation. Every method has the fast path's domain: a
+/// piece (a side of a zero of q) turning more than kMaxResolvedTurning gives NaN without
+/// evaluating the integrand, so the choice of method does not change which trial curves exist. gauss-legendre is the fast path of
 /// detail::integrate_tangent without its error estimate (its value bit for bit). Keeps a pointer
 /// to the method: the method must outlive the integrator.
 class TrialIntegrator {

@@ -13,6 +13,7 @@
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
 #include "lac/constructions/detail/tangent_integral.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace lac {
 namespace {
@@ -207,6 +208,30 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsWithoutIntegratingIt) {
     EXPECT_FALSE(r.summary.message.empty());
     EXPECT_LT(r.summary.evaluations, 10'000) << r.summary.message;  // was ~5e6 integrand evaluations for ceres
     expect_finite(r);
+  }
+}
+
+// The same class for the other integrators (found by fuzz_hermite once it chose integrators): with
+// |κ·chord| ~ 1e8 the simplex with gk-tanh-sinh spent 2.7 s integrating trial segments turning
+// ~1e8 rad. Every method now has the fast path's domain (pieces turning ≤ 1024 rad), so such trial
+// curves fail at once whatever the method.
+TEST(HermiteRobustness, G2WithUnresolvableTurningFailsFastWithEveryIntegrator) {
+  const G2Problem p{{{2.046630859375, 3.141592653589793}, -10, -5.476806640625},
+                    {{-1, -5}, -9.09130903892219e-09, -16490496},
+                    -1.226318359375};
+  for (const MethodInfo& m : quadrature_methods()) {
+    for (const auto& s : g2_solvers()) {
+      G2Options o;
+      o.solver = s.method;
+      o.integrator = make_quadrature(m.name);
+      o.grid_fallback = false;
+      const G2Result r = solve_g2(p, o);
+      SCOPED_TRACE(std::string(m.name) + " " + std::string(s.name));
+      EXPECT_FALSE(r.usable()) << r.summary.message;
+      EXPECT_FALSE(r.summary.message.empty());
+      EXPECT_LT(r.summary.evaluations, 10'000) << r.summary.message;
+      expect_finite(r);
+    }
   }
 }
 
