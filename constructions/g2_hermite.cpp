@@ -127,6 +127,7 @@ void G2Options::validate() const {
     throw_input_error("g2", "max_iterations", max_iterations, "[1, 100000]");
   if (max_inner_iterations < 1 || max_inner_iterations > 100000)
     throw_input_error("g2", "max_inner_iterations", max_inner_iterations, "[1, 100000]");
+  if (max_evaluations < 1) throw_input_error("g2", "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
   if (static_cast<int>(solver) < 0 || static_cast<size_t>(solver) >= g2_solvers().size())
     throw_input_error("g2", "solver", static_cast<double>(solver), "a G2Solver");
   std::visit([](const auto& m) { m.validate(); }, integrator);
@@ -175,9 +176,16 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     const detail::G2StartEstimate e = start == G2Start::fast ? detail::g2_fast_start(p) : detail::g2_bezier_grid_start(p);
     res.info.start_seconds += seconds_since(t0);
     sum.evaluations += e.evaluations;
-    const detail::G2SolverOutcome so = o.solver == G2Solver::paper
-                                           ? detail::solve_g2_paper(p, e, o)
-                                           : detail::solve_g2_nonlinear(static_cast<NonlinearMethod>(o.solver), p, e, o);
+    // The run's trial curves fail once the call's budget is spent (the run counts from 0).
+    p.integrate.set_limit(o.max_evaluations - sum.evaluations);
+    detail::G2SolverOutcome so = o.solver == G2Solver::paper
+                                     ? detail::solve_g2_paper(p, e, o)
+                                     : detail::solve_g2_nonlinear(static_cast<NonlinearMethod>(o.solver), p, e, o);
+    if (so.status != Status::ok && so.evaluations >= p.integrate.limit()) {
+      so.status = Status::max_iterations;
+      so.message = "integrand evaluation budget max_evaluations = " + std::to_string(o.max_evaluations) +
+                   " spent (" + so.message + ")";
+    }
     sum.iterations += so.iterations;
     sum.evaluations += so.evaluations;
     sum.constructions += so.constructions;
@@ -214,6 +222,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   // solver used (the trial path: no second rule for an estimate, which the check below replaces).
   std::array<std::complex<double>, 3> parts{};
   std::complex<double> integral{};
+  p.integrate.set_limit(std::numeric_limits<long>::max());  // the result is integrated whatever the budget
   for (size_t k = 0; k < 3; ++k) {
     parts[k] = p.integrate(p.law, segments[k], sum.evaluations);
     integral += parts[k];

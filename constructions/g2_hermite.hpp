@@ -80,6 +80,11 @@ struct G2Options {
   /// newton, ceres: iterations; paper: outer iterations on h; simplex: 100× this many moves.
   int max_iterations = 60;
   int max_inner_iterations = 200;  ///< paper: bisection steps on c30 and on c10
+  /// Integrand evaluations of the whole call (starts, solves, fallback): once spent, trial curves
+  /// fail and the solve ends max_iterations. An adaptive method on a hard integrand can cost ~10^6
+  /// evaluations a trial curve; the default is ~4× what the slowest combination (simplex with rk4:
+  /// 2.6·10^7) needs on ordinary data, seconds of CPU at most.
+  long max_evaluations = 100'000'000;
   /// Residuals re-evaluated with Boost tanh-sinh quadrature (independent of the integrator), and
   /// the integrator's deviation from it reported as summary.error_estimate; without it the
   /// residuals are the integrator's own (no error estimate).

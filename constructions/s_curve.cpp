@@ -45,6 +45,7 @@ void SCurveOptions::validate() const {
     throw_input_error("scurve", "solver", static_cast<double>(solver), "a RootMethod");
   if (max_iterations < 1 || max_iterations > 10000)
     throw_input_error("scurve", "max_iterations", max_iterations, "[1, 10000]");
+  if (max_evaluations < 1) throw_input_error("scurve", "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
   if (bracket_doublings < 1 || bracket_doublings > 2000)
     throw_input_error("scurve", "bracket_doublings", bracket_doublings, "[1, 2000]");
   if (!(accept > 0 && accept <= 1)) throw_input_error("scurve", "accept", accept, "(0, 1]");
@@ -85,7 +86,7 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   sum.integrator = std::string(name_of(o.integrator));
   sum.solver = std::string(to_string(o.solver));
   const LaLaw law{alpha, 1.0};
-  const detail::TrialIntegrator integrate(o.integrator);
+  detail::TrialIntegrator integrate(o.integrator, o.max_evaluations);
   auto finish = [&](Status st, std::string msg) {
     sum.status = st;
     sum.message = std::move(msg);
@@ -97,6 +98,13 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     }
     sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_begin).count();
     return res;
+  };
+  // A failure after trial Λ stopped being integrated is the evaluation budget's.
+  auto fail = [&](Status st, std::string msg) {
+    if (sum.evaluations >= o.max_evaluations)
+      return finish(Status::max_iterations, "integrand evaluation budget max_evaluations = " +
+                                                std::to_string(o.max_evaluations) + " spent (" + msg + ")");
+    return finish(st, std::move(msg));
   };
 
   // Step 1–2: start at the origin with tangent +x; φD, φE (Fig. 1).
@@ -161,8 +169,8 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     g_hi = g(hi);
   }
   if (!std::isfinite(g_lo) || !std::isfinite(g_hi))
-    return finish(Status::numerical_failure, "the end direction is not finite at Lambda = " +
-                                                 format_number(std::isfinite(g_lo) ? hi : lo));
+    return fail(Status::numerical_failure,
+                "the end direction is not finite at Lambda = " + format_number(std::isfinite(g_lo) ? hi : lo));
   const auto same_sign = [](double a, double b) { return a != 0 && b != 0 && (a > 0) == (b > 0); };
   double x_atol = 0;
   if (same_sign(g_lo, g_hi) && !s_shaped) {
@@ -173,7 +181,10 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
       x_atol = kLambdaRtol * hi;  // relative to a root near 0 the bracket never narrows
     } else {
       const double g_limit = g(lambda_reach);
-      if (!(g_limit >= 0))
+      if (!std::isfinite(g_limit))  // no evidence either way
+        return fail(Status::numerical_failure,
+                    "the end direction is not finite at the limit Lambda = " + format_number(lambda_reach));
+      if (g_limit < 0)
         return finish(Status::no_solution,
                       "no Lambda gives the end direction (C-shaped case, 004 Fig. 2(a): one alpha < 0 segment without "
                       "inflection, its curvature decreasing from the end whose tangent the chord is farther from): the "
@@ -199,14 +210,15 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     ro.max_iterations = o.max_iterations;
     const RootResult rr = find_root(o.solver, g, Bracket{lo, hi, g_lo, g_hi}, ro);
     sum.iterations = rr.iterations;
-    if (!usable(rr.status)) return finish(rr.status, "root finder on Lambda: " + rr.message);
+    if (!usable(rr.status)) return fail(rr.status, "root finder on Lambda: " + rr.message);
     // The bracket's midpoint where the method narrowed it (as 004's bisection), else its best point.
     lambda = detail::width_done(rr.lo, rr.hi, ro) ? 0.5 * (rr.lo + rr.hi) : rr.root;
   }
   const double L = length_at(lambda);
   info.lambda = lambda;
   // The end point by the integrator, as for every trial Λ (the trial path: no second rule for an
-  // estimate, which the check below replaces).
+  // estimate, which the check below replaces), whatever the budget.
+  integrate.set_limit(std::numeric_limits<long>::max());
   const std::complex<double> end = integrate(law, standard_segment(alpha, lambda, L), sum.evaluations);
   if (!std::isfinite(end.real()) || !std::isfinite(end.imag()))
     return finish(Status::numerical_failure, "the integrator failed on the solved curve");

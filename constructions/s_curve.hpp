@@ -33,6 +33,9 @@ struct SCurveOptions {
   AnyQuadrature integrator = GaussLegendre{};  ///< end point of every trial Λ and of the result
   int max_iterations = 200;                 ///< root-finder iterations on Λ
   int bracket_doublings = 200;              ///< growth steps of Λ's upper end when it is unbounded
+  /// Integrand evaluations of the search: once spent, trial Λ fail and the status is max_iterations
+  /// (as G2Options::max_evaluations; an S-curve needs far less, ≤ 10^6 with rk4).
+  long max_evaluations = 100'000'000;
   /// Residuals from an independent tanh-sinh evaluation of the end point, and the integrator's
   /// deviation from it as summary.error_estimate; without it they come from the integrator (no
   /// error estimate).

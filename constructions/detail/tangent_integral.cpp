@@ -141,7 +141,7 @@ Complex trial_integral(const void* method, const LaLaw& law, const LinearQ& seg,
 
 }  // namespace
 
-TrialIntegrator::TrialIntegrator(const AnyQuadrature& method) {
+TrialIntegrator::TrialIntegrator(const AnyQuadrature& method, long limit) : limit_(limit) {
   std::visit(
       [this](const auto& m) {
         method_ = &m;

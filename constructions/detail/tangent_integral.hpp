@@ -5,6 +5,7 @@
 // (curves/planar/la_segment.hpp; gauss-legendre through its fast path); igf, a closed form of the
 // standard form, through the standard-form conversion (curves/planar/standard_form.hpp).
 #include <complex>
+#include <limits>
 
 #include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/curves/planar/la_segment.hpp"
@@ -31,20 +32,27 @@ inline constexpr double kIgfMinU = 1e-3;
 /// registry, chosen once: NaN when the method fails (an unusable status, or data no segment has),
 /// which the solvers treat as a failed evaluation. Every method has the fast path's domain: a
 /// piece (a side of a zero of q) turning more than kMaxResolvedTurning gives NaN without
-/// evaluating the integrand, so the choice of method does not change which trial curves exist. gauss-legendre is the fast path of
+/// evaluating the integrand, so the choice of method does not change which trial curves exist.
+/// With a limit, a call whose `evaluations` counter has reached it gives NaN at once too (the
+/// construction's evaluation budget; the caller reports it). gauss-legendre is the fast path of
 /// detail::integrate_tangent without its error estimate (its value bit for bit). Keeps a pointer
 /// to the method: the method must outlive the integrator.
 class TrialIntegrator {
  public:
-  explicit TrialIntegrator(const AnyQuadrature& method);
+  explicit TrialIntegrator(const AnyQuadrature& method, long limit = std::numeric_limits<long>::max());
   std::complex<double> operator()(const LaLaw& law, const LinearQ& seg, long& evaluations) const {
+    if (evaluations >= limit_) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     return integrate_(method_, law, seg, evaluations);
   }
+  /// Calls whose counter has reached `limit` give NaN (no limit: the largest long).
+  void set_limit(long limit) { limit_ = limit; }
+  long limit() const { return limit_; }
 
  private:
   using Integrate = std::complex<double> (*)(const void*, const LaLaw&, const LinearQ&, long&);
   const void* method_ = nullptr;
   Integrate integrate_ = nullptr;
+  long limit_ = std::numeric_limits<long>::max();
 };
 
 }  // namespace lac::detail

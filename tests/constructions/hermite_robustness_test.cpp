@@ -235,6 +235,36 @@ TEST(HermiteRobustness, G2WithUnresolvableTurningFailsFastWithEveryIntegrator) {
   }
 }
 
+// Found by fuzz_hermite once it chose integrators: at α = −1e-8 every gauss-kronrod trial integral
+// exhausts its 20000 intervals (~8e5 evaluations), and newton spent 5 s, the simplex minutes. The
+// call's budget max_evaluations now stops the trials: status max_iterations naming it.
+TEST(HermiteRobustness, G2AndSCurveStopAtTheEvaluationBudget) {
+  const G2Problem p{{{1, 1}, 5e-324, -1}, {{3.141592653589793, 1}, 7.999755859375, 7.999755859375}, -1e-08};
+  for (const G2Solver solver : {G2Solver::newton, G2Solver::simplex}) {
+    G2Options o;
+    o.solver = solver;
+    o.integrator = GaussKronrod{};
+    o.max_evaluations = 1'000'000;
+    const G2Result r = solve_g2(p, o);
+    SCOPED_TRACE(std::string(to_string(solver)));
+    EXPECT_EQ(r.summary.status, Status::max_iterations) << r.summary.message;
+    EXPECT_NE(r.summary.message.find("max_evaluations"), std::string::npos) << r.summary.message;
+    EXPECT_LT(r.summary.evaluations, 4'000'000);  // the budget plus one trial curve's three integrals
+    expect_finite(r);
+  }
+  SCurveOptions o;
+  o.max_evaluations = 100;  // the bracket's ends alone take more
+  const SCurveResult s = solve_s_curve(Points{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}}, -0.5, o);
+  EXPECT_EQ(s.summary.status, Status::max_iterations) << s.summary.message;
+  EXPECT_NE(s.summary.message.find("max_evaluations"), std::string::npos) << s.summary.message;
+  expect_finite(s);
+  o.max_evaluations = 0;
+  expect_input_error([&] { solve_s_curve(Points{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}}, -0.5, o); }, "max_evaluations", "[1");
+  G2Options g;
+  g.max_evaluations = 0;
+  expect_input_error([&] { solve_g2(p, g); }, "max_evaluations", "[1");
+}
+
 // Found by the 10^6-execution campaign of fuzz_hermite (R16): κ0 = 5e-324 puts the zero of q
 // within rounding of the segment's start; the residual check split off a piece of subnormal
 // width, on which Boost tanh-sinh threw (float_next of NaN) out of solve_g2.
