@@ -218,17 +218,23 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     return finish(Status::numerical_failure,
                   "the curve's length, curvature, extent or coefficients are beyond the double range");
 
-  // The curve: segment k + 1 starts where segment k ends by the integrator, with the integrals the
-  // solver used (the trial path: no second rule for an estimate, which the check below replaces).
+  // Per segment ∫e^{iφ}dS: verified, by the independent tanh-sinh evaluation (the residual check and
+  // the most accurate placement), and the integrator's error is its end point at the solution,
+  // which the solver evaluated, against that; unverified, by the integrator (residuals its own, no
+  // estimate). No second rule for an estimate: that made α = −1 solves 12 % slower.
   std::array<std::complex<double>, 3> parts{};
   std::complex<double> integral{};
   p.integrate.set_limit(std::numeric_limits<long>::max());  // the result is integrated whatever the budget
   for (size_t k = 0; k < 3; ++k) {
-    parts[k] = p.integrate(p.law, segments[k], sum.evaluations);
+    parts[k] = o.verify ? detail::integrate_tangent_reference(p.law, segments[k])
+                        : p.integrate(p.law, segments[k], sum.evaluations);
     integral += parts[k];
   }
   if (!std::isfinite(integral.real()) || !std::isfinite(integral.imag()))
-    return finish(Status::numerical_failure, "the integrator failed on the solved curve");
+    return finish(Status::numerical_failure, o.verify ? "the residual check of the end conditions is not a finite number"
+                                                      : "the integrator failed on the solved curve");
+  if (o.verify && so.end) sum.error_estimate = r * std::abs(*so.end - so.h * integral);
+  // The curve: segment k + 1 starts where segment k ends.
   const std::complex<double> rotation = std::polar(1.0, chord_angle);
   try {
     std::vector<LaSegment> placed;
@@ -243,19 +249,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   }
 
   // Residuals; the end point's in the normalized frame (end − p1 = (p1 − p0)(h ∫e^{iφ}dS − 1)),
-  // which cannot overflow. Verified, the end point is the independent tanh-sinh one, and the
-  // integrator's error is measured against it segment by segment (its estimate); unverified, the
-  // residuals are the integrator's own and it gives no estimate.
-  if (o.verify) {
-    double deviation = 0;
-    integral = {};
-    for (size_t k = 0; k < 3; ++k) {
-      const std::complex<double> reference = detail::integrate_tangent_reference(p.law, segments[k]);
-      deviation += std::abs(parts[k] - reference);
-      integral += reference;
-    }
-    if (std::isfinite(deviation)) sum.error_estimate = length * deviation;
-  }
+  // which cannot overflow.
   const double residual_position = r * std::abs(so.h * integral - 1.0);
   const auto& s0 = segments.front();
   const auto& s2 = segments.back();

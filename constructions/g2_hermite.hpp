@@ -113,10 +113,10 @@ using G2Result = Result<PlanarCurve, G2Info>;
 
 /// Solves the G2 Hermite problem. The curve: three LaSegments in S (q of κ̃ per unit S), placed
 /// with scale h·chord and the chord's direction, each starting where the previous one ends (by
-/// the integrator). Summary: iterations (summed over the fast and the fallback run), evaluations
+/// the tanh-sinh check with `verify`, else by the integrator). Summary: iterations (summed over the fast and the fallback run), evaluations
 /// (integrand calls, initial estimates included), constructions (trial curves whose end
 /// conditions were evaluated), residuals position / angle / curvature (user units), with `verify`
-/// error_estimate = the integrator's error of the segments' end points against tanh-sinh. Throws
+/// error_estimate = the integrator's error of the end point against tanh-sinh. Throws
 /// InputError for non-finite data, coincident end points, α outside [−5, 5], invalid options; every
 /// other failure is a status.
 G2Result solve_g2(const G2Problem& problem, const G2Options& options = {});

@@ -135,6 +135,12 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
   out.message = r.message;
   out.iterations = r.iterations;
   out.constructions = r.evaluations;
+  // r(x) holds h∫cos φ dS − 1 and h∫sin φ dS: newton, simplex r[2], r[1]; ceres r[8], r[9] (Eqs. 32, 33).
+  const bool ten = method == NonlinearMethod::ceres;
+  if (r.residual.size() == (ten ? 10 : 3)) {
+    const std::complex<double> end(r.residual[ten ? 8 : 2] + 1.0, r.residual[ten ? 9 : 1]);
+    if (std::isfinite(end.real()) && std::isfinite(end.imag())) out.end = end;
+  }
   return out;
 }
 

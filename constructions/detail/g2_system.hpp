@@ -2,6 +2,8 @@
 // The G2 triple-LA system in the normalized frame (start at the origin, end at (1, 0), lengths in
 // chord units) shared by the solvers and the initial estimates of constructions/g2_hermite.
 #include <array>
+#include <complex>
+#include <optional>
 #include <string>
 
 #include "lac/common/status.hpp"
@@ -32,6 +34,9 @@ struct G2SolverOutcome {
   int iterations = 0;
   long evaluations = 0;    ///< integrand calls
   long constructions = 0;  ///< trial curves whose end conditions were evaluated
+  /// h∫e^{iφ}dS by the integrator at the solution (the normalized end point), when the solver
+  /// evaluated it there: what the integrator makes of the returned curve, at no extra cost.
+  std::optional<std::complex<double>> end;
 };
 
 /// The three segments for length h and joint values q1, q2 (q0, q3 from the end curvatures).

@@ -199,6 +199,7 @@ G2SolverOutcome solve_g2_paper(const G2System& p, const G2StartEstimate& s, cons
     }
     out.status = Status::ok;
     out.message.clear();
+    out.end = h * best.integral;
     out.h = h;
     out.q1 = ps.q0 + c10 * kG2S1;
     out.q2 = ps.q3 - c30 * (1 - kG2S2);
