@@ -1,4 +1,4 @@
-// G2 Hermite (004 §3) and S-curve (004 §2.5) timings. Targets (issue 9): G2 ≤ 1 ms median
+// G2 Hermite (004 §3) and S-curve (004 §2.5) timings. Targets: G2 ≤ 1 ms median
 // including the initial estimate; S-curve ≤ 50 µs. Each iteration solves the next problem of
 // a fixed random set (same distribution as experiments/g2_random.cpp), so the time is a mean
 // over the set; counters report the share solved. The G2 rows run without the grid fallback
@@ -13,11 +13,11 @@
 #include "lac/constructions/detail/g2_system.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
+#include "lac/integrators/registry.hpp"
 
 namespace {
 
 using namespace lac;
-using namespace lac::hermite;
 
 constexpr double kAlphas[] = {-0.5, -1.0, -2.0};
 
@@ -32,10 +32,12 @@ std::vector<G2Problem> g2_set(double alpha) {
   return v;
 }
 
-void run_g2(benchmark::State& state, G2Solver solver, G2Start start, bool verify) {
+void run_g2(benchmark::State& state, G2Solver solver, G2Start start, bool verify,
+            const AnyQuadrature& integrator = GaussLegendre{}) {
   const auto set = g2_set(kAlphas[state.range(0)]);
   G2Options o;
   o.solver = solver;
+  o.integrator = integrator;
   o.start = start;
   o.verify = verify;
   o.grid_fallback = false;
@@ -43,8 +45,8 @@ void run_g2(benchmark::State& state, G2Solver solver, G2Start start, bool verify
   long solved = 0, calls = 0;
   for (auto _ : state) {
     const G2Result r = solve_g2(set[i++ % set.size()], o);
-    benchmark::DoNotOptimize(r.length);
-    solved += usable(r.status);
+    benchmark::DoNotOptimize(r.info.h);
+    solved += r.usable();
     ++calls;
   }
   state.counters["alpha"] = kAlphas[state.range(0)];
@@ -64,23 +66,36 @@ BENCHMARK(BM_G2_ceres_fast)->DenseRange(0, 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_G2_newton_grid)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_G2_paper_grid)->Arg(0)->Unit(benchmark::kMillisecond);
 
+// Other methods (not in the before/after comparison of scripts/bench_compare.py): the simplex, and
+// every quadrature method of the registry in the trial curves (newton, fast start), α = −0.5.
+void BM_Methods_G2_simplex(benchmark::State& s) { run_g2(s, G2Solver::simplex, G2Start::fast, true); }
+void BM_Methods_G2_integrator(benchmark::State& s, const char* name) {
+  run_g2(s, G2Solver::newton, G2Start::fast, true, make_quadrature(name));
+}
+BENCHMARK(BM_Methods_G2_simplex)->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_G2_integrator, rk4, "rk4")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_G2_integrator, rk45, "rk45")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_G2_integrator, gauss_kronrod, "gauss-kronrod")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_G2_integrator, gk_tanh_sinh, "gk-tanh-sinh")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_G2_integrator, igf, "igf")->Arg(0)->Unit(benchmark::kMicrosecond);
+
 // The initial estimates alone (normalized problems of the same set).
 void run_start(benchmark::State& state, bool grid) {
   const auto set = g2_set(kAlphas[state.range(0)]);
-  std::vector<hermite::detail::NormalizedG2> norm;
+  const AnyQuadrature method = GaussLegendre{};  // the estimates integrate with their own rule; unused
+  std::vector<detail::G2System> norm;
   for (const auto& p : set) {
-    hermite::detail::NormalizedG2 n;
-    n.law = {p.alpha, p.start.kappa < 0 ? -1.0 : 1.0};
-    n.phi_s = p.start.theta;
-    n.phi_e = p.end.theta;
-    n.kappa_s = p.start.kappa;
-    n.kappa_e = p.end.kappa;
-    norm.push_back(n);
+    norm.push_back({{p.alpha, p.start.kappa < 0 ? -1.0 : 1.0},
+                    p.start.theta,
+                    p.end.theta,
+                    p.start.kappa,
+                    p.end.kappa,
+                    detail::TrialIntegrator(method)});
   }
   size_t i = 0;
   for (auto _ : state) {
     const auto& n = norm[i++ % norm.size()];
-    const auto e = grid ? hermite::detail::bezier_grid_start(n, n.law.alpha) : hermite::detail::fast_start(n);
+    const auto e = grid ? detail::g2_bezier_grid_start(n) : detail::g2_fast_start(n);
     benchmark::DoNotOptimize(e.h);
   }
 }
@@ -100,7 +115,7 @@ std::vector<std::array<std::complex<double>, 4>> s_set() {
                                                 std::complex<double>(1, 0) - std::polar(1.0 / 3, b),
                                                 std::complex<double>(1, 0)};
     const auto r = solve_s_curve(P, -1.0);
-    if (r.shape == SCurveShape::s_shaped && r.status == Status::ok) v.push_back(P);
+    if (r.info.shape == SCurveShape::s_shaped && r.summary.status == Status::ok) v.push_back(P);
   }
   return v;
 }
@@ -108,18 +123,19 @@ std::vector<std::array<std::complex<double>, 4>> s_set() {
 // S-curve slopes: the G2 ones, then both ends of the range 004 §2.5 illustrates (Fig. 3).
 constexpr double kSAlphas[] = {-0.5, -1.0, -2.0, -0.25, -4.0};
 
-void run_s(benchmark::State& state, RootMethod m, bool verify) {
+void run_s(benchmark::State& state, RootMethod m, bool verify, const AnyQuadrature& integrator = GaussLegendre{}) {
   static const auto set = s_set();
   const double alpha = kSAlphas[state.range(0)];
   SCurveOptions o;
-  o.root = m;
+  o.solver = m;
+  o.integrator = integrator;
   o.verify = verify;
   size_t i = 0;
   long solved = 0, calls = 0;
   for (auto _ : state) {
     const SCurveResult r = solve_s_curve(set[i++ % set.size()], alpha, o);
-    benchmark::DoNotOptimize(r.lambda);
-    solved += r.status == Status::ok;
+    benchmark::DoNotOptimize(r.info.lambda);
+    solved += r.summary.status == Status::ok;
     ++calls;
   }
   state.counters["alpha"] = alpha;
@@ -131,5 +147,19 @@ void BM_SCurve_bisection(benchmark::State& s) { run_s(s, RootMethod::bisection, 
 BENCHMARK(BM_SCurve_toms748)->DenseRange(0, 4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SCurve_toms748_noverify)->DenseRange(0, 4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SCurve_bisection)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
+// Other methods for the S-curve (not compared by scripts/bench_compare.py), α = −0.5: the 1-D
+// registry's secant and ceres, and every quadrature method with toms748.
+void BM_Methods_SCurve_root(benchmark::State& s, RootMethod m) { run_s(s, m, true); }
+void BM_Methods_SCurve_integrator(benchmark::State& s, const char* name) {
+  run_s(s, RootMethod::toms748, true, make_quadrature(name));
+}
+BENCHMARK_CAPTURE(BM_Methods_SCurve_root, secant, RootMethod::secant)->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_root, ceres, RootMethod::ceres)->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_integrator, rk4, "rk4")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_integrator, rk45, "rk45")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_integrator, gauss_kronrod, "gauss-kronrod")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_integrator, gk_tanh_sinh, "gk-tanh-sinh")->Arg(0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Methods_SCurve_integrator, igf, "igf")->Arg(0)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

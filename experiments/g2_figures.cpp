@@ -17,7 +17,6 @@
 namespace {
 
 using namespace lac;
-using namespace lac::hermite;
 
 struct G2Spec {
   const char* figure;
@@ -26,11 +25,11 @@ struct G2Spec {
 };
 
 // Curvature monotone along the curve (non-strictly, sampled)?
-bool monotone(const std::vector<CurveSample>& pts) {
+bool monotone(const std::vector<PositionResult>& pts) {
   bool up = true, down = true;
   for (size_t k = 1; k < pts.size(); ++k) {
-    up = up && pts[k].kappa >= pts[k - 1].kappa - 1e-12;
-    down = down && pts[k].kappa <= pts[k - 1].kappa + 1e-12;
+    up = up && pts[k].point.kappa >= pts[k - 1].point.kappa - 1e-12;
+    down = down && pts[k].point.kappa <= pts[k - 1].point.kappa + 1e-12;
   }
   return up || down;
 }
@@ -53,11 +52,15 @@ int main(int argc, char** argv) {
          "piece's start; theta tangent angle; kappa signed curvature\n";
   pts << "figure,label,alpha,piece,S,s,x,y,theta,kappa\n";
   pts.precision(12);
+  // S = s / length, uniform (PlanarCurve::sample is uniform in s).
   auto write = [&](const std::string& fig, const std::string& label, double alpha, int piece,
-                   const std::vector<CurveSample>& v) {
-    for (const auto& q : v)
-      pts << fig << "," << label << "," << alpha << "," << piece << "," << q.S << "," << q.s << "," << q.position.real()
+                   const std::vector<PositionResult>& v) {
+    for (size_t k = 0; k < v.size(); ++k) {
+      const CurvePoint& q = v[k].point;
+      const double S = k + 1 == v.size() ? 1.0 : static_cast<double>(k) / static_cast<double>(v.size() - 1);
+      pts << fig << "," << label << "," << alpha << "," << piece << "," << S << "," << q.s << "," << q.position.real()
           << "," << q.position.imag() << "," << q.theta << "," << q.kappa << "\n";
+    }
   };
 
   io::Table t;
@@ -68,11 +71,12 @@ int main(int argc, char** argv) {
   for (double alpha : {-0.25, -0.5, -1.0, -2.0, -4.0}) {
     const SCurveResult r = solve_s_curve(P, alpha);
     const std::string label = "alpha " + io::fmt(alpha);
-    std::vector<CurveSample> v;
-    if (r.status == Status::ok) v = r.polyline(samples), write("fig3", label, alpha, 0, v);
-    t.add_row({"fig3 (S-curve)", label, io::fmt(alpha), std::string(to_string(r.status)), io::fmt(r.length, 6),
-               io::sci(r.residual_position, 2), io::sci(r.residual_angle, 2), "—",
-               v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(r.iterations), io::fmt(1e3 * r.seconds)});
+    std::vector<PositionResult> v;
+    if (r.summary.status == Status::ok) v = r.curve.sample(samples), write("fig3", label, alpha, 0, v);
+    const Summary& e = r.summary;
+    t.add_row({"fig3 (S-curve)", label, io::fmt(alpha), std::string(to_string(e.status)), io::fmt(r.curve.length(), 6),
+               io::sci(e.residuals.position.value_or(0), 2), io::sci(e.residuals.angle.value_or(0), 2), "—",
+               v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(e.iterations), io::fmt(1e3 * e.seconds)});
   }
 
   // Figs. 6–7: α = −0.5, ends (0,0) at +0.6 rad and (4,0) at −0.6 rad, several end curvatures.
@@ -94,18 +98,19 @@ int main(int argc, char** argv) {
   {
     for (const G2Spec& s : all) {
       const G2Result r = solve_g2(s.problem);
-      std::vector<CurveSample> v;
+      std::vector<PositionResult> v;
       const bool joined = std::string(s.figure) == "fig8";
-      if (usable(r.status)) {
-        v = r.curve.polyline(samples);
+      if (r.usable()) {
+        v = r.curve.sample(samples);
         write(s.figure, s.label, s.problem.alpha, joined ? piece : 0, v);
       }
       if (joined) ++piece;
+      const Summary& e = r.summary;
       t.add_row({std::string(s.figure) + (joined ? " (joined G2)" : " (α = −0.5)"), s.label, io::fmt(s.problem.alpha),
-                 std::string(to_string(r.status)), io::fmt(r.length, 6), io::sci(r.residual_position, 2),
-                 io::sci(r.residual_angle, 2), io::sci(r.residual_curvature, 2),
-                 v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(r.iterations),
-                 io::fmt(1e3 * r.seconds)});
+                 std::string(to_string(e.status)), io::fmt(r.curve.length(), 6), io::sci(e.residuals.position.value_or(0), 2),
+                 io::sci(e.residuals.angle.value_or(0), 2), io::sci(e.residuals.curvature.value_or(0), 2),
+                 v.empty() ? "—" : (monotone(v) ? "yes" : "no"), std::to_string(e.iterations),
+                 io::fmt(1e3 * e.seconds)});
     }
   }
   io::ResultDoc doc;

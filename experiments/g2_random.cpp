@@ -1,4 +1,4 @@
-// Random G2 Hermite problems (issue 9; 004 §3) and random S-curve inputs (004 §2.5):
+// Random G2 Hermite problems (004 §3) and random S-curve inputs (004 §2.5):
 // success rate, median / p90 time and worst residuals per solver and initial estimate,
 // beside 004's reported timings. Writes results/g2_random.{md,csv} and
 // results/scurve_random.{md,csv}.
@@ -25,7 +25,6 @@
 namespace {
 
 using namespace lac;
-using namespace lac::hermite;
 
 // 004's reported timings (Core i7 3.4 GHz, 8 GB; 004 footnote 2): S-curve parameter search
 // 15–20 ms (§2.5); G2: about 30 ms for the Bézier optimization + 20 ms for the parameters,
@@ -41,16 +40,16 @@ struct Stats {
   double worst_pos = 0, worst_ang = 0, worst_cur = 0;
   void add(const G2Result& r, double extra_ms = 0, double extra_start_ms = 0) {
     ++tried;
-    ms.push_back(1e3 * r.seconds + extra_ms);
-    start_ms.push_back(1e3 * r.start_seconds + extra_start_ms);
-    if (usable(r.status)) {
+    ms.push_back(1e3 * r.summary.seconds + extra_ms);
+    start_ms.push_back(1e3 * r.info.start_seconds + extra_start_ms);
+    if (r.usable()) {
       ++solved;
-      iterations.push_back(r.iterations);
-      worst_pos = std::max(worst_pos, r.residual_position);
-      worst_ang = std::max(worst_ang, r.residual_angle);
-      worst_cur = std::max(worst_cur, r.residual_curvature);
+      iterations.push_back(r.summary.iterations);
+      worst_pos = std::max(worst_pos, *r.summary.residuals.position);
+      worst_ang = std::max(worst_ang, *r.summary.residuals.angle);
+      worst_cur = std::max(worst_cur, *r.summary.residuals.curvature);
     } else {
-      ++failures[std::string(to_string(r.status))];
+      ++failures[std::string(to_string(r.summary.status))];
     }
   }
 };
@@ -120,16 +119,16 @@ int main(int argc, char** argv) {
         const G2Result r = solve_g2(pr, o);
         fast.add(r);
         G2Result g;
-        const bool need_grid = i < grid_subset || !usable(r.status);
+        const bool need_grid = i < grid_subset || !r.usable();
         if (need_grid) {
           o.start = G2Start::bezier_grid;
           g = solve_g2(pr, o);
           if (i < grid_subset) grid.add(g);
         }
-        if (usable(r.status))
+        if (r.usable())
           fallback.add(r);
         else
-          fallback.add(g, 1e3 * r.seconds, 1e3 * r.start_seconds);
+          fallback.add(g, 1e3 * r.summary.seconds, 1e3 * r.info.start_seconds);
       }
       row(alpha, solver, "fast", fast);
       row(alpha, solver, "fast + grid fallback", fallback);
@@ -159,12 +158,13 @@ int main(int argc, char** argv) {
       "004 reports (Core i7 3.4 GHz, 8 GB, C++ plug-in of a commercial CAD system): about " + io::fmt(kPaperG2TotalMs) +
       " ms per G2 curve, of which about " + io::fmt(kPaperG2StartMs) +
       " ms for the Bézier optimization (004 §3.4); "
-      "the Fig. 7/8 examples took 15–55 ms. It gives no success rate. Failures here are statuses (no_solution, "
-      "max_iterations, numerical_failure) with a message, never a curve that misses the data. The `paper` solver's "
-      "numerical_failure is the breakdown 004 §3.4 describes: the iteration on h pushes the end point behind the start "
-      "(“the curve length becomes negative”). The `newton` solver's no_solution means the damped Newton found no "
-      "descent (a local minimum of the residual). The failing problems we inspected all have steep end tangents "
-      "(|θ| > 0.9 rad), where a solution, if any, is long and nearly loops.";
+      "the Fig. 7/8 examples took 15–55 ms. It gives no success rate. Failures here are statuses (not_converged, "
+      "max_iterations) with a message, never a curve that misses the data; no_solution is reserved for proven cases (for α ≥ 0 "
+      "the curvature-sign rules). The `paper` solver's not_converged is mostly the breakdown 004 §3.4 describes: the iteration on h "
+      "pushes the end point behind the start (“the curve length becomes negative”). The `newton` and `ceres` "
+      "solvers' not_converged means no descent from the last iterate (a local minimum of the residual). The "
+      "failing problems we inspected all have steep end tangents (|θ| > 0.9 rad), where a solution, if any, is "
+      "long and nearly loops.";
   io::write_result_table(out, "g2_random", doc, t);
 
   // S-curve inputs: P0 = (0,0), P3 = (1,0), tangent legs of length 1/3 at angles uniform in (−π/2, π/2).
@@ -193,20 +193,21 @@ int main(int argc, char** argv) {
     if (!(alpha < 0)) continue;
     for (RootMethod m : {RootMethod::bisection, RootMethod::toms748}) {
       SCurveOptions o;
-      o.root = m;
+      o.solver = m;
       int s_shaped = 0, c_shaped = 0, s_solved = 0, c_solved = 0;
       std::vector<double> us, it;
       double wp = 0, wa = 0;
       for (const auto& P : inputs) {
         const SCurveResult r = solve_s_curve(P, alpha, o);
-        const bool is_s = r.shape == SCurveShape::s_shaped;
+        const bool is_s = r.info.shape == SCurveShape::s_shaped;
         (is_s ? s_shaped : c_shaped)++;
-        if (is_s) us.push_back(1e6 * r.seconds);
-        if (r.status == Status::ok && r.residual_position <= 1e-10 && r.residual_angle <= 1e-10) {
+        if (is_s) us.push_back(1e6 * r.summary.seconds);
+        const Residuals& e = r.summary.residuals;
+        if (r.summary.status == Status::ok && *e.position <= 1e-10 && *e.angle <= 1e-10) {
           (is_s ? s_solved : c_solved)++;
-          if (is_s) it.push_back(r.iterations);
-          wp = std::max(wp, r.residual_position);
-          wa = std::max(wa, r.residual_angle);
+          if (is_s) it.push_back(r.summary.iterations);
+          wp = std::max(wp, *e.position);
+          wa = std::max(wa, *e.angle);
         }
       }
       ts.add_row({io::fmt(alpha), std::string(to_string(m)), std::to_string(inputs.size()), std::to_string(s_shaped),

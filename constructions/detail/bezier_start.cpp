@@ -13,7 +13,7 @@
 #include "lac/constructions/detail/g2_system.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
 
-namespace lac::hermite::detail {
+namespace lac::detail {
 namespace {
 
 using Vec = Eigen::Vector2d;
@@ -65,13 +65,14 @@ double t_at_length(const Ctrl& P, double target, double total) {
 
 }  // namespace
 
-StartEstimate bezier_grid_start(const NormalizedG2& p, double alpha) {
+G2StartEstimate g2_bezier_grid_start(const G2System& p) {
+  const double alpha = p.law.alpha;
   const Vec P0(0, 0), P5(1, 0);
   const Vec t0(std::cos(p.phi_s), std::sin(p.phi_s)), n0(-t0.y(), t0.x());
   const Vec t1(std::cos(p.phi_e), std::sin(p.phi_e)), n1(-t1.y(), t1.x());
   const auto& x = gauss_legendre_20().nodes;
   const auto& w = gauss_legendre_20().weights;
-  StartEstimate e;
+  G2StartEstimate e;
   double best = std::numeric_limits<double>::infinity();
   Ctrl best_ctrl{};
   Ctrl P;
@@ -107,12 +108,12 @@ StartEstimate bezier_grid_start(const NormalizedG2& p, double alpha) {
       }
     }
   }
-  if (!std::isfinite(best)) return fast_start(p);  // every candidate has an infinite J: no better guess
+  if (!std::isfinite(best)) return g2_fast_start(p);  // every candidate has an infinite J: no better guess
   const double total = arc_length(best_ctrl, 1.0);
   e.h = total;
-  e.k1 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kS1 * total, total))) * total;
-  e.k2 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kS2 * total, total))) * total;
+  e.k1 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kG2S1 * total, total))) * total;
+  e.k2 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kG2S2 * total, total))) * total;
   return e;
 }
 
-}  // namespace lac::hermite::detail
+}  // namespace lac::detail

@@ -2,50 +2,50 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <limits>
 
-namespace lac::hermite::detail {
+namespace lac::detail {
 namespace {
 
-// Newton unknowns: z = (log h, z1, z2) with q = z for α ≤ 0 and q = σ e^(−αz) (z = log|κ̃|)
-// for α > 0, so that h > 0 and q keeps the only sign an α > 0 segment allows.
-double q_of_z(const NormalizedG2& p, double z) {
-  return p.law.alpha > 0 ? p.law.sigma * std::exp(-p.law.alpha * z) : z;
-}
-double z_of_q(const NormalizedG2& p, double q) { return p.law.alpha > 0 ? -std::log(std::abs(q)) / p.law.alpha : q; }
+// Unknowns of newton and simplex: z = (log h, z1, z2) with q = z for α ≤ 0 and q = σ e^(−αz)
+// (z = log|κ̃|) for α > 0, so that h > 0 and q keeps the only sign an α > 0 segment allows.
+double q_of_z(const G2System& p, double z) { return p.law.alpha > 0 ? p.law.sigma * std::exp(-p.law.alpha * z) : z; }
+double z_of_q(const G2System& p, double q) { return p.law.alpha > 0 ? -std::log(std::abs(q)) / p.law.alpha : q; }
 
 }  // namespace
 
-std::array<lac::detail::LinearQ, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2) {
+std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, double q2) {
   const double q0 = p.law.q_of_kappa(p.kappa_s * h);
   const double q3 = p.law.q_of_kappa(p.kappa_e * h);
-  std::array<lac::detail::LinearQ, 3> seg;
-  seg[0] = {0.0, kS1, q0, q1, p.phi_s};
-  seg[1] = {kS1, kS2, q1, q2, seg[0].phi_b(p.law)};
-  seg[2] = {kS2, 1.0, q2, q3, seg[1].phi_b(p.law)};
+  std::array<LinearQ, 3> seg;
+  seg[0] = {0.0, kG2S1, q0, q1, p.phi_s};
+  seg[1] = {kG2S1, kG2S2, q1, q2, seg[0].phi_b(p.law)};
+  seg[2] = {kG2S2, 1.0, q2, q3, seg[1].phi_b(p.law)};
   return seg;
 }
 
-std::array<double, 3> residuals(const NormalizedG2& p, double h, double q1, double q2, long& evaluations) {
-  const auto seg = build_segments(p, h, q1, q2);
+std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, double q2, long& evaluations) {
+  const auto seg = g2_segments(p, h, q1, q2);
   std::complex<double> sum{};
-  for (const auto& s : seg) sum += lac::detail::integrate_tangent(p.law, s, evaluations);
+  for (const auto& s : seg) sum += p.integrate(p.law, s, evaluations);
   return {seg[2].phi_b(p.law) - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
 }
 
-double joint_q(const NormalizedG2& p, double kappa_tilde, double h) {
+double g2_joint_q(const G2System& p, double kappa_tilde, double h) {
   if (p.law.alpha >= 0 && !(kappa_tilde * p.law.sigma > 0 && std::isfinite(kappa_tilde))) {
     kappa_tilde = p.law.sigma * std::sqrt(std::abs(p.kappa_s * p.kappa_e)) * h;  // geometric mean of the ends
   }
   return p.law.q_of_kappa(kappa_tilde);
 }
 
-StartEstimate fast_start(const NormalizedG2& p) {
+G2StartEstimate g2_fast_start(const G2System& p) {
   // Small-angle triple clothoid: κ̃ piecewise linear on the nodes 0, S1, S2, 1. With
   // sin φ ≈ φ the end conditions become linear in κ̃1, κ̃2:
   //   ∫κ̃ dS = φe − φs,   ∫φ dS = φs + ∫(1 − S)κ̃ dS = 0.
   // Then h = 1 / ∫cos φ dS of that clothoid (exact quadrature); two passes.
-  const std::array<double, 4> nodes{0.0, kS1, kS2, 1.0};
+  const std::array<double, 4> nodes{0.0, kG2S1, kG2S2, 1.0};
   std::array<double, 4> A{}, B{};
   for (int i = 0; i < 3; ++i) {
     const double a = nodes[i], L = nodes[i + 1] - nodes[i];
@@ -54,10 +54,9 @@ StartEstimate fast_start(const NormalizedG2& p) {
     B[i] += L * ((1.0 - a) / 2.0 - L / 6.0);
     B[i + 1] += L * ((1.0 - a) / 2.0 - L / 3.0);
   }
-  StartEstimate e;
+  G2StartEstimate e;
   const LaLaw clothoid{-1.0, 1.0};
-  NormalizedG2 c = p;
-  c.law = clothoid;
+  G2System c{clothoid, p.phi_s, p.phi_e, p.kappa_s, p.kappa_e, p.integrate};
   for (int pass = 0; pass < 2; ++pass) {
     const double k0 = p.kappa_s * e.h, k3 = p.kappa_e * e.h;
     Eigen::Matrix2d M;
@@ -66,9 +65,9 @@ StartEstimate fast_start(const NormalizedG2& p) {
     const Eigen::Vector2d k = M.partialPivLu().solve(rhs);
     e.k1 = k(0);
     e.k2 = k(1);
-    const auto seg = build_segments(c, e.h, e.k1, e.k2);
+    const auto seg = g2_segments(c, e.h, e.k1, e.k2);
     std::complex<double> sum{};
-    for (const auto& s : seg) sum += lac::detail::integrate_tangent(clothoid, s, e.evaluations);
+    for (const auto& s : seg) sum += integrate_tangent(clothoid, s, e.evaluations);
     if (!(sum.real() > 0.05) || !std::isfinite(sum.real())) break;  // keep the last usable h
     const double h_new = 1.0 / sum.real();
     e.k1 *= h_new / e.h;
@@ -78,66 +77,71 @@ StartEstimate fast_start(const NormalizedG2& p) {
   return e;
 }
 
-SolverOutcome solve_newton(const NormalizedG2& p, const StartEstimate& s, const G2Options& o) {
-  SolverOutcome out;
-  Eigen::Vector3d z(std::log(s.h), z_of_q(p, joint_q(p, s.k1, s.h)), z_of_q(p, joint_q(p, s.k2, s.h)));
-  auto eval = [&](const Eigen::Vector3d& v) {
-    const auto r = residuals(p, std::exp(v(0)), q_of_z(p, v(1)), q_of_z(p, v(2)), out.evaluations);
-    return Eigen::Vector3d(r[0], r[1], r[2]);
-  };
-  auto norm = [](const Eigen::Vector3d& r) { return r.allFinite() ? r.lpNorm<Eigen::Infinity>() : HUGE_VAL; };
-  Eigen::Vector3d r = eval(z);
-  double rn = norm(r);
-  if (!std::isfinite(rn)) {
+G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, const G2StartEstimate& s,
+                                   const G2Options& o) {
+  G2SolverOutcome out;
+  // An estimate beyond the double range (e.g. κ·chord ~ 1e300 overflows the joint curvatures) is
+  // no starting point: numerical_failure, as solve_nonlinear reports a non-finite r at the start.
+  const auto unusable_start = [&out, method] {
     out.status = Status::numerical_failure;
-    out.message = "newton: the initial estimate gives a non-finite curve";
+    out.message = std::string(to_string(method)) + ": the initial estimate gives a non-finite curve";
     return out;
+  };
+  NonlinearOptions no;
+  no.norm = ResidualNorm::max;
+  no.residual_tolerance = o.tolerance;
+  NonlinearResult r;
+  if (method == NonlinearMethod::ceres) {
+    no.ceres.max_iterations = o.max_iterations;
+    no.ceres.function_tolerance = 1e-30;
+    no.ceres.gradient_tolerance = 1e-30;
+    no.ceres.parameter_tolerance = 1e-16;
+    no.ceres.stop_at_tolerance = false;
+    const Eigen::VectorXd x0 = g2_ten_unknown_start(p, s);
+    if (!x0.allFinite()) return unusable_start();
+    r = solve_nonlinear(method, g2_ten_unknown_residual(p, out.evaluations), x0, no);
+    const auto [h, q1, q2] = g2_ten_unknown_solution(r.x);
+    out.h = h, out.q1 = q1, out.q2 = q2;
+  } else {
+    // Newton: forward differences, no step cap, the length changing by at most e^2 per trial, 30
+    // trial steps 1 … 2^-29; a stall within 1e3·tolerance counts as converged.
+    no.newton.max_iterations = o.max_iterations;
+    no.newton.max_evaluations = LONG_MAX;
+    no.newton.fd_step = 1e-7;
+    no.newton.backward_differences = false;
+    no.newton.reject_singular = false;
+    no.newton.max_step = std::numeric_limits<double>::infinity();
+    no.newton.max_trial_change = Eigen::Vector3d(2.0, std::numeric_limits<double>::infinity(),
+                                                 std::numeric_limits<double>::infinity());
+    no.newton.max_halvings = 29;
+    no.newton.step_tolerance = 0;
+    no.newton.stall_factor = 1e3;
+    no.simplex.max_iterations = 100 * o.max_iterations;
+    no.simplex.max_evaluations = 200L * o.max_iterations;
+    const NonlinearResidual residual{3, [&](ConstVectorMap z, VectorMap out_r) {
+                                       const auto v = g2_residuals(p, std::exp(z[0]), q_of_z(p, z[1]), q_of_z(p, z[2]),
+                                                                   out.evaluations);
+                                       out_r << v[0], v[1], v[2];
+                                       return true;
+                                     }};
+    const Eigen::Vector3d z0(std::log(s.h), z_of_q(p, g2_joint_q(p, s.k1, s.h)), z_of_q(p, g2_joint_q(p, s.k2, s.h)));
+    if (!z0.allFinite()) return unusable_start();
+    r = solve_nonlinear(method, residual, z0, no);
+    out.h = std::exp(r.x[0]);
+    out.q1 = q_of_z(p, r.x[1]);
+    out.q2 = q_of_z(p, r.x[2]);
   }
-  out.status = Status::max_iterations;
-  out.message = "newton: iteration cap reached";
-  for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {
-    if (rn <= o.tolerance) {
-      out.status = Status::ok;
-      out.message.clear();
-      break;
-    }
-    Eigen::Matrix3d J;
-    for (int j = 0; j < 3; ++j) {  // forward differences
-      Eigen::Vector3d zj = z;
-      const double step = 1e-7 * std::max(1.0, std::abs(z(j)));
-      zj(j) += step;
-      J.col(j) = (eval(zj) - r) / step;
-    }
-    const Eigen::Vector3d dz = J.fullPivLu().solve(-r);
-    if (!dz.allFinite()) {
-      out.status = Status::numerical_failure;
-      out.message = "newton: singular Jacobian";
-      break;
-    }
-    // Backtracking: halve the step until the residual decreases (at most 30 halvings).
-    double lambda = 1.0;
-    bool moved = false;
-    for (int k = 0; k < 30; ++k, lambda *= 0.5) {
-      Eigen::Vector3d zt = z + lambda * dz;
-      if (std::abs(zt(0) - z(0)) > 2.0) continue;  // length may change by e^2 per step at most
-      const Eigen::Vector3d rt = eval(zt);
-      const double nt = norm(rt);
-      if (nt < rn) {
-        z = zt, r = rt, rn = nt, moved = true;
-        break;
-      }
-    }
-    if (!moved) {
-      out.status = rn <= 1e3 * o.tolerance ? Status::ok : Status::no_solution;
-      out.message = rn <= 1e3 * o.tolerance ? "" : "newton: no descent from here (residual " + std::to_string(rn) + ")";
-      break;
-    }
+  out.status = r.status;
+  out.message = r.message;
+  out.iterations = r.iterations;
+  out.constructions = r.evaluations;
+  // r(x) holds h∫cos φ dS − 1 and h∫sin φ dS: newton, simplex r[2], r[1]; ceres r[8], r[9] (Eqs. 32, 33).
+  const bool ten = method == NonlinearMethod::ceres;
+  if (r.residual.size() == (ten ? 10 : 3)) {
+    const std::complex<double> end(r.residual[ten ? 8 : 2] + 1.0, r.residual[ten ? 9 : 1]);
+    if (std::isfinite(end.real()) && std::isfinite(end.imag())) out.end = end;
   }
-  if (out.status == Status::max_iterations && rn <= o.tolerance) out.status = Status::ok, out.message.clear();
-  out.h = std::exp(z(0));
-  out.q1 = q_of_z(p, z(1));
-  out.q2 = q_of_z(p, z(2));
   return out;
 }
 
-}  // namespace lac::hermite::detail
+}  // namespace lac::detail

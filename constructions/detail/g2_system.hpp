@@ -1,50 +1,69 @@
 #pragma once
-// The G2 triple-LA system in the normalized frame (start at the origin, end at (1, 0);
-// lengths in chord units) shared by the solvers and the initial estimates.
+// The G2 triple-LA system in the normalized frame (start at the origin, end at (1, 0), lengths in
+// chord units) shared by the solvers and the initial estimates of constructions/g2_hermite.
 #include <array>
+#include <complex>
+#include <optional>
 #include <string>
 
 #include "lac/common/status.hpp"
-#include "lac/curves/planar/detail/linear_q.hpp"
+#include "lac/constructions/detail/tangent_integral.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/curves/planar/detail/linear_q.hpp"
+#include "lac/solvers/nonlinear.hpp"
 
-namespace lac::hermite::detail {
+namespace lac::detail {
 
-struct NormalizedG2 {
+struct G2System {
   LaLaw law;
   double phi_s = 0, phi_e = 0;      ///< end tangent angles relative to the chord
   double kappa_s = 0, kappa_e = 0;  ///< end curvatures in chord units (κ·r)
+  TrialIntegrator integrate;        ///< ∫e^{iφ}dS of trial segments, the construction's method
 };
 
 /// Joint curvatures κ̃ = κh at S1, S2 and the length h: what both starts deliver.
-struct StartEstimate {
+struct G2StartEstimate {
   double h = 1, k1 = 0, k2 = 0;
   long evaluations = 0;
 };
 
-struct SolverOutcome {
-  Status status = Status::no_solution;
+struct G2SolverOutcome {
+  Status status = Status::not_converged;
   std::string message;
   double h = 1, q1 = 0, q2 = 0;
   int iterations = 0;
-  long evaluations = 0;
+  long evaluations = 0;    ///< integrand calls
+  long constructions = 0;  ///< trial curves whose end conditions were evaluated
+  /// h∫e^{iφ}dS by the integrator at the solution (the normalized end point), when the solver
+  /// evaluated it there: what the integrator makes of the returned curve, at no extra cost.
+  std::optional<std::complex<double>> end;
 };
 
 /// The three segments for length h and joint values q1, q2 (q0, q3 from the end curvatures).
-std::array<lac::detail::LinearQ, 3> build_segments(const NormalizedG2& p, double h, double q1, double q2);
+std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, double q2);
 
-/// Normalized residuals: [φ(1) − φe, h∫sin φ dS, h∫cos φ dS − 1]; non-finite when the
-/// segments are not representable.
-std::array<double, 3> residuals(const NormalizedG2& p, double h, double q1, double q2, long& evaluations);
+/// Normalized residuals [φ(1) − φe, h∫sin φ dS, h∫cos φ dS − 1] (004 Eqs. 41, 33, 32); non-finite
+/// when the segments are not representable or the integrator fails.
+std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, double q2, long& evaluations);
 
 /// q of a joint curvature estimate, forced onto the sign the law allows (α ≥ 0: sign σ, ≠ 0).
-double joint_q(const NormalizedG2& p, double kappa_tilde, double h);
+double g2_joint_q(const G2System& p, double kappa_tilde, double h);
 
-StartEstimate fast_start(const NormalizedG2& p);
-StartEstimate bezier_grid_start(const NormalizedG2& p, double alpha);
+/// The initial estimates integrate their clothoid or Bézier with their own fixed Gauss–Legendre
+/// rule (part of the estimate, not of the solve).
+G2StartEstimate g2_fast_start(const G2System& p);
+G2StartEstimate g2_bezier_grid_start(const G2System& p);
 
-SolverOutcome solve_newton(const NormalizedG2& p, const StartEstimate& s, const G2Options& o);
-SolverOutcome solve_paper(const NormalizedG2& p, const StartEstimate& s, const G2Options& o);
-SolverOutcome solve_ceres(const NormalizedG2& p, const StartEstimate& s, const G2Options& o);
+/// newton and simplex on (log h, z1, z2), ceres on the ten-unknown system; solvers/nonlinear.hpp.
+G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, const G2StartEstimate& s,
+                                   const G2Options& o);
+/// 004 §3.3.
+G2SolverOutcome solve_g2_paper(const G2System& p, const G2StartEstimate& s, const G2Options& o);
 
-}  // namespace lac::hermite::detail
+/// The ten-unknown system for ceres (004 Eqs. 20–23, 28–33): its residual, its starting point from
+/// an estimate, and (h, q1, q2) of a solution.
+NonlinearResidual g2_ten_unknown_residual(const G2System& p, long& evaluations);
+Eigen::VectorXd g2_ten_unknown_start(const G2System& p, const G2StartEstimate& s);
+std::array<double, 3> g2_ten_unknown_solution(const Eigen::VectorXd& x);
+
+}  // namespace lac::detail

@@ -1,16 +1,31 @@
 // 004 §3.3: outer iteration on h, bisection on c30 for Eq. (33), Newton on c10 for Eq. (41).
+// Both bisections are the 1-D registry's (solvers/root_1d.hpp); the inner Newton stays here: it
+// uses the analytic derivative of Eq. (41) (Eqs. 42–44), which no registry method takes (the
+// registry's secant/"newton" differences f instead).
 #include <cmath>
 #include <optional>
 
 #include "lac/constructions/detail/g2_system.hpp"
+#include "lac/solvers/root_1d.hpp"
 
-namespace lac::hermite::detail {
+namespace lac::detail {
 namespace {
 
+// Bisection width of both searches: 4e-16 relative (the paper solver's historical tolerance).
+RootOptions bisection_options(const G2Options& o) {
+  RootOptions r;
+  r.x_rtol = 4e-16;
+  r.x_atol = 0;
+  r.f_atol = 0;
+  r.max_iterations = o.max_inner_iterations;
+  return r;
+}
+
 struct PaperSolver {
-  const NormalizedG2& p;
+  const G2System& p;
   const G2Options& o;
   long evaluations = 0;
+  long constructions = 0;
   int inner_steps = 0;
   double q0 = 0, q3 = 0;
 
@@ -24,9 +39,9 @@ struct PaperSolver {
 
   // Eq. (41) up to the constant factor (α−1)/α: φs + T1 + T2 + T3 − φe as a function of c10.
   double f(double c10, double q2) const {
-    const double q1 = q0 + c10 * kS1;
-    return p.phi_s + kS1 * p.law.divided_difference(q0, q1) + (kS2 - kS1) * p.law.divided_difference(q1, q2) +
-           (1 - kS2) * p.law.divided_difference(q2, q3) - p.phi_e;
+    const double q1 = q0 + c10 * kG2S1;
+    return p.phi_s + kG2S1 * p.law.divided_difference(q0, q1) + (kG2S2 - kG2S1) * p.law.divided_difference(q1, q2) +
+           (1 - kG2S2) * p.law.divided_difference(q2, q3) - p.phi_e;
   }
   bool q_allowed(double q) const { return std::isfinite(q) && (p.law.alpha <= 0 || q * p.law.sigma > 0); }
 
@@ -35,17 +50,17 @@ struct PaperSolver {
   std::optional<double> solve_c10(double q2, double guess) {
     double c10 = guess;
     for (int it = 0; it < 50 && inner_steps < 100 * o.max_inner_iterations; ++it, ++inner_steps) {
-      const double q1 = q0 + c10 * kS1;
+      const double q1 = q0 + c10 * kG2S1;
       if (!q_allowed(q1)) break;
       const double fv = f(c10, q2);
       if (!std::isfinite(fv)) break;
       if (std::abs(fv) <= 1e-15) return c10;
-      const double c20 = (q2 - q1) / (kS2 - kS1);
+      const double c20 = (q2 - q1) / (kG2S2 - kG2S1);
       if (std::abs(c20) < 1e-9 * std::max(1.0, std::abs(q1))) break;  // arc: Appendix A
-      const double df = kS1 * (dT_dqb(kS1, q0, q1) + dT_dqa(kS2 - kS1, q1, q2));
+      const double df = kG2S1 * (dT_dqb(kG2S1, q0, q1) + dT_dqa(kG2S2 - kG2S1, q1, q2));
       if (!std::isfinite(df) || df == 0) break;
       double step = -fv / df;
-      for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kS1); ++k) step *= 0.5;
+      for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kG2S1); ++k) step *= 0.5;
       c10 += step;
       if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(c10))) return c10;
     }
@@ -54,114 +69,119 @@ struct PaperSolver {
 
   std::optional<double> bisect_c10(double q2, double guess) {
     // f is monotonic in c10 (κ is monotonic in q); expand a bracket around the guess.
-    auto fv = [&](double c) { return q_allowed(q0 + c * kS1) ? f(c, q2) : NAN; };
+    auto fv = [&](double c) { return q_allowed(q0 + c * kG2S1) ? f(c, q2) : NAN; };
     double lo = guess, flo = fv(lo);
     if (!std::isfinite(flo)) {
-      lo = p.law.alpha > 0 ? -q0 / kS1 * 0.5 : 0.0;  // for α > 0 halfway to q1 = 0
+      lo = p.law.alpha > 0 ? -q0 / kG2S1 * 0.5 : 0.0;  // for α > 0 halfway to q1 = 0
       flo = fv(lo);
     }
     if (!std::isfinite(flo)) return std::nullopt;
-    double hi = lo, step = 0.1 * std::max(1.0, std::abs(lo));
+    double hi = lo, fhi = flo, step = 0.1 * std::max(1.0, std::abs(lo));
     bool found = false;
     for (int k = 0; k < 80 && !found; ++k, step *= 2) {
       for (double dir : {1.0, -1.0}) {
         const double c = lo + dir * step, v = fv(c);
         if (std::isfinite(v) && (v > 0) != (flo > 0)) {
-          hi = c, found = true;
+          hi = c, fhi = v, found = true;
           break;
         }
       }
     }
     if (!found) return std::nullopt;
-    for (int k = 0; k < o.max_inner_iterations; ++k, ++inner_steps) {
-      const double mid = 0.5 * (lo + hi), v = fv(mid);
-      if (!std::isfinite(v)) return std::nullopt;
-      if ((v > 0) == (flo > 0))
-        lo = mid, flo = v;
-      else
-        hi = mid;
-      if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
-    }
-    return 0.5 * (lo + hi);
+    const Bracket b = lo < hi ? Bracket{lo, hi, flo, fhi} : Bracket{hi, lo, fhi, flo};
+    const RootResult r = bisection(fv, b, bisection_options(o));
+    inner_steps += r.iterations;
+    if (r.status == Status::numerical_failure) return std::nullopt;
+    return 0.5 * (r.lo + r.hi);
   }
 
   struct Eval {
+    double c30 = NAN;
     double g = NAN;  // ∫ sin φ dS
     double c10 = NAN;
     std::complex<double> integral;
   };
   Eval eval_c30(double h, double c30, double c10_guess) {
     Eval e;
-    const double q2 = q3 - c30 * (1 - kS2);
+    e.c30 = c30;
+    const double q2 = q3 - c30 * (1 - kG2S2);
     if (!q_allowed(q2)) return e;
     const auto c10 = solve_c10(q2, c10_guess);
     if (!c10) return e;
     e.c10 = *c10;
-    const auto seg = build_segments(p, h, q0 + *c10 * kS1, q2);
-    for (const auto& s : seg) e.integral += lac::detail::integrate_tangent(p.law, s, evaluations);
+    const auto seg = g2_segments(p, h, q0 + *c10 * kG2S1, q2);
+    for (const auto& s : seg) e.integral += p.integrate(p.law, s, evaluations);
+    ++constructions;
     e.g = e.integral.imag();
     return e;
+  }
+
+  // c30 with ∫sin φ dS = 0 (Eq. 33) by bisection between `start` and `other` (g of opposite
+  // signs). Each midpoint's Newton on c10 starts from the c10 of the bracket end on the start's
+  // side; the result is the end with the smaller |g|.
+  Eval bisect_c30(double h, const Eval& start, const Eval& other) {
+    Eval same = start, opposite = other;
+    const bool start_positive = start.g > 0;
+    auto g = [&](double c30) {
+      const Eval e = eval_c30(h, c30, same.c10);
+      if (std::isfinite(e.g)) ((e.g > 0) == start_positive ? same : opposite) = e;
+      return e.g;
+    };
+    const Bracket b = start.c30 < other.c30 ? Bracket{start.c30, other.c30, start.g, other.g}
+                                            : Bracket{other.c30, start.c30, other.g, start.g};
+    bisection(g, b, bisection_options(o));
+    return std::abs(same.g) <= std::abs(opposite.g) ? same : opposite;
   }
 };
 
 }  // namespace
 
-SolverOutcome solve_paper(const NormalizedG2& p, const StartEstimate& s, const G2Options& o) {
+G2SolverOutcome solve_g2_paper(const G2System& p, const G2StartEstimate& s, const G2Options& o) {
   PaperSolver ps{p, o};
-  SolverOutcome out;
+  G2SolverOutcome out;
   double h = s.h;
   ps.q0 = p.law.q_of_kappa(p.kappa_s * h);
   ps.q3 = p.law.q_of_kappa(p.kappa_e * h);
-  double c10 = (joint_q(p, s.k1, h) - ps.q0) / kS1;
-  double c30 = (ps.q3 - joint_q(p, s.k2, h)) / (1 - kS2);
+  double c10 = (g2_joint_q(p, s.k1, h) - ps.q0) / kG2S1;
+  double c30 = (ps.q3 - g2_joint_q(p, s.k2, h)) / (1 - kG2S2);
   out.status = Status::max_iterations;
   out.message = "paper: outer iteration on h reached its cap";
   for (out.iterations = 1; out.iterations <= o.max_iterations; ++out.iterations) {
     ps.q0 = p.law.q_of_kappa(p.kappa_s * h);
     ps.q3 = p.law.q_of_kappa(p.kappa_e * h);
     // Bisection on c30 for ∫ sin φ dS = 0 (Eq. 33); bracket by doubling steps around c30.
-    auto e0 = ps.eval_c30(h, c30, c10);
+    const PaperSolver::Eval e0 = ps.eval_c30(h, c30, c10);
     if (!std::isfinite(e0.g)) {
-      out.status = Status::no_solution;
+      out.status = Status::not_converged;
       out.message = "paper: no c10 solves Eq. (41) at the current c30";
       break;
     }
-    double lo = c30, hi = c30;
-    auto elo = e0, ehi = e0;
-    bool found = e0.g == 0;
-    double step = 0.05 * std::max(1.0, std::abs(c30));
-    for (int k = 0; k < 60 && !found; ++k, step *= 2) {
-      for (double dir : {1.0, -1.0}) {
-        const double c = c30 + dir * step;
-        auto e = ps.eval_c30(h, c, e0.c10);
-        if (std::isfinite(e.g) && (e.g > 0) != (e0.g > 0)) {
-          hi = c, ehi = e, found = true;
-          break;
+    PaperSolver::Eval best = e0;
+    if (e0.g != 0) {
+      bool found = false;
+      double step = 0.05 * std::max(1.0, std::abs(c30));
+      for (int k = 0; k < 60 && !found; ++k, step *= 2) {
+        for (double dir : {1.0, -1.0}) {
+          const PaperSolver::Eval e = ps.eval_c30(h, c30 + dir * step, e0.c10);
+          if (std::isfinite(e.g) && (e.g > 0) != (e0.g > 0)) {
+            best = ps.bisect_c30(h, e0, e);
+            found = true;
+            break;
+          }
         }
       }
+      if (!found) {
+        out.status = Status::not_converged;
+        out.message = "paper: no sign change of Eq. (33) found in c30 (60 doubling steps each way)";
+        break;
+      }
     }
-    if (!found) {
-      out.status = Status::no_solution;
-      out.message = "paper: no sign change of Eq. (33) found in c30";
-      break;
-    }
-    for (int k = 0; k < o.max_inner_iterations && elo.g != 0; ++k) {
-      const double mid = 0.5 * (lo + hi);
-      auto e = ps.eval_c30(h, mid, elo.c10);
-      if (!std::isfinite(e.g)) break;
-      if ((e.g > 0) == (elo.g > 0))
-        lo = mid, elo = e;
-      else
-        hi = mid, ehi = e;
-      if (std::abs(hi - lo) <= 4e-16 * std::max(std::abs(lo), std::abs(hi))) break;
-    }
-    const auto& best = std::abs(elo.g) <= std::abs(ehi.g) ? elo : ehi;
-    c30 = &best == &elo ? lo : hi;
+    c30 = best.c30;
     c10 = best.c10;
     const double x = best.integral.real();
     if (!(x > 0)) {
-      out.status = Status::numerical_failure;
-      out.message = "paper: the end point moved behind the start (h would be negative)";
+      out.status = Status::not_converged;
+      out.message = "paper: the end point moved behind the start (h would be negative, 004 §3.4)";
       break;
     }
     // Eq. (32): h = r / ∫cos φ dS with r = 1.
@@ -169,24 +189,26 @@ SolverOutcome solve_paper(const NormalizedG2& p, const StartEstimate& s, const G
     const bool converged = std::abs(h_new - h) <= o.tolerance * h;
     // Keep κ at the joints when h changes (c10, c30 are per unit S of q(κh)).
     if (!converged) {
-      const double q1 = ps.q0 + c10 * kS1, q2 = ps.q3 - c30 * (1 - kS2);
+      const double q1 = ps.q0 + c10 * kG2S1, q2 = ps.q3 - c30 * (1 - kG2S2);
       const double k1 = p.law.kappa_of_q(q1) / h * h_new, k2 = p.law.kappa_of_q(q2) / h * h_new;
       const double q0n = p.law.q_of_kappa(p.kappa_s * h_new), q3n = p.law.q_of_kappa(p.kappa_e * h_new);
-      const double c10n = (p.law.q_of_kappa(k1) - q0n) / kS1, c30n = (q3n - p.law.q_of_kappa(k2)) / (1 - kS2);
+      const double c10n = (p.law.q_of_kappa(k1) - q0n) / kG2S1, c30n = (q3n - p.law.q_of_kappa(k2)) / (1 - kG2S2);
       if (std::isfinite(c10n) && std::isfinite(c30n)) c10 = c10n, c30 = c30n;
       h = h_new;
       continue;
     }
     out.status = Status::ok;
     out.message.clear();
+    out.end = h * best.integral;
     out.h = h;
-    out.q1 = ps.q0 + c10 * kS1;
-    out.q2 = ps.q3 - c30 * (1 - kS2);
+    out.q1 = ps.q0 + c10 * kG2S1;
+    out.q2 = ps.q3 - c30 * (1 - kG2S2);
     break;
   }
   if (out.iterations > o.max_iterations) out.iterations = o.max_iterations;
   out.evaluations = ps.evaluations;
+  out.constructions = ps.constructions;
   return out;
 }
 
-}  // namespace lac::hermite::detail
+}  // namespace lac::detail

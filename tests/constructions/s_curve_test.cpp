@@ -8,9 +8,11 @@
 #include <random>
 
 #include "lac/common/error.hpp"
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/integrators/registry.hpp"
 #include "lac/curves/planar/detail/linear_q.hpp"
 
-namespace lac::hermite {
+namespace lac {
 namespace {
 
 constexpr double kEndTol = 1e-10;         // end position (× chord) and tangent angles
@@ -20,15 +22,22 @@ using Points = std::array<std::complex<double>, 4>;
 
 double wrap(double a) { return std::remainder(a, 2 * std::numbers::pi); }
 
+// Frame and position at t = s / length ∈ [0, 1] from P0 (positions by Gauss–Legendre).
+CurvePoint at(const SCurveResult& r, double t) {
+  const PositionResult p = position_at(r.curve, t * r.curve.length());
+  EXPECT_TRUE(usable(p.status)) << p.message;
+  return p.point;
+}
+
 void expect_interpolates(const SCurveResult& r, const Points& P) {
   const double chord = std::abs(P[3] - P[0]);
-  const auto a = r.at(0), b = r.at(1);
+  const auto a = at(r, 0), b = at(r, 1);
   EXPECT_LE(std::abs(a.position - P[0]) / chord, kEndTol);
   EXPECT_LE(std::abs(b.position - P[3]) / chord, kEndTol);
   EXPECT_LE(std::abs(wrap(a.theta - std::arg(P[1] - P[0]))), kEndTol);
   EXPECT_LE(std::abs(wrap(b.theta - std::arg(P[3] - P[2]))), kEndTol);
-  EXPECT_LE(r.residual_position / chord, kEndTol);
-  EXPECT_LE(r.residual_angle, kEndTol);
+  EXPECT_LE(*r.summary.residuals.position / chord, kEndTol);
+  EXPECT_LE(*r.summary.residuals.angle, kEndTol);
 }
 
 TEST(SCurve, ParallelTangentsGiveAnSCurveWithOneInflection) {
@@ -36,18 +45,20 @@ TEST(SCurve, ParallelTangentsGiveAnSCurveWithOneInflection) {
   for (double alpha : {-0.5, -1.0, -2.0, -4.0}) {
     for (RootMethod m : {RootMethod::toms748, RootMethod::bisection}) {
       SCurveOptions o;
-      o.root = m;
+      o.solver = m;
       const auto r = solve_s_curve(P, alpha, o);
       SCOPED_TRACE("alpha " + std::to_string(alpha) + " " + std::string(to_string(m)));
-      ASSERT_EQ(r.status, Status::ok) << r.message;
-      EXPECT_EQ(r.shape, SCurveShape::s_shaped);
+      ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+      EXPECT_EQ(r.info.shape, SCurveShape::s_shaped);
       expect_interpolates(r, P);
-      ASSERT_GT(r.inflection_s, 0);
-      ASSERT_LT(r.inflection_s, r.length);
+      ASSERT_TRUE(r.info.inflection_s.has_value());
+      const double inflection = *r.info.inflection_s, length = r.curve.length();
+      ASSERT_GT(inflection, 0);
+      ASSERT_LT(inflection, length);
       // Curvature is zero at the inflection and changes sign there.
-      const double t = r.inflection_s / r.length;
-      EXPECT_NEAR(r.at(t).kappa * r.length, 0.0, 1e-9);
-      EXPECT_LT(r.at(0.5 * t).kappa * r.at(0.5 * (1 + t)).kappa, 0.0);
+      const double t = inflection / length;
+      EXPECT_NEAR(at(r, t).kappa * length, 0.0, 1e-9);
+      EXPECT_LT(at(r, 0.5 * t).kappa * at(r, 0.5 * (1 + t)).kappa, 0.0);
     }
   }
 }
@@ -55,31 +66,31 @@ TEST(SCurve, ParallelTangentsGiveAnSCurveWithOneInflection) {
 TEST(SCurve, RootMethodsAgree) {
   const Points P{{{0, 0}, {1, 0}, {2, 1.5}, {3, 1}}};
   SCurveOptions bis;
-  bis.root = RootMethod::bisection;
+  bis.solver = RootMethod::bisection;
   const auto a = solve_s_curve(P, -1.0), b = solve_s_curve(P, -1.0, bis);
-  ASSERT_EQ(a.status, Status::ok) << a.message;
-  ASSERT_EQ(b.status, Status::ok) << b.message;
-  EXPECT_NEAR(a.lambda, b.lambda, 1e-12 * a.lambda);
-  EXPECT_LT(a.iterations, b.iterations);  // toms748 needs fewer evaluations than bisection
+  ASSERT_EQ(a.summary.status, Status::ok) << a.summary.message;
+  ASSERT_EQ(b.summary.status, Status::ok) << b.summary.message;
+  EXPECT_NEAR(a.info.lambda, b.info.lambda, 1e-12 * a.info.lambda);
+  EXPECT_LT(a.summary.iterations, b.summary.iterations);  // toms748 needs fewer evaluations than bisection
 }
 
 TEST(SCurve, MirroredAndCShapedInputs) {
   // Mirror image of an S: still S-shaped; mirrored flag set.
   const Points S_down{{{0, 0}, {1, 0}, {2, -1}, {3, -1}}};
   const auto s = solve_s_curve(S_down, -1.0);
-  ASSERT_EQ(s.status, Status::ok) << s.message;
-  EXPECT_EQ(s.shape, SCurveShape::s_shaped);
-  EXPECT_TRUE(s.mirrored);
+  ASSERT_EQ(s.summary.status, Status::ok) << s.summary.message;
+  EXPECT_EQ(s.info.shape, SCurveShape::s_shaped);
+  EXPECT_TRUE(s.info.mirrored);
   expect_interpolates(s, S_down);
   // C-shaped (Fig. 2(a)): the curve stays inside the tangent triangle, no inflection.
   for (const Points& P :
        {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}}) {
     const auto c = solve_s_curve(P, -1.0);
-    ASSERT_EQ(c.status, Status::ok) << c.message;
-    EXPECT_EQ(c.shape, SCurveShape::c_shaped);
-    EXPECT_EQ(c.inflection_s, -1);
+    ASSERT_EQ(c.summary.status, Status::ok) << c.summary.message;
+    EXPECT_EQ(c.info.shape, SCurveShape::c_shaped);
+    EXPECT_FALSE(c.info.inflection_s.has_value());
     expect_interpolates(c, P);
-    for (double t : {0.1, 0.5, 0.9}) EXPECT_GT(c.at(t).kappa * c.at(0.5).kappa, 0) << t;
+    for (double t : {0.1, 0.5, 0.9}) EXPECT_GT(at(c, t).kappa * at(c, 0.5).kappa, 0) << t;
   }
 }
 
@@ -103,8 +114,62 @@ TEST(SCurve, BadInput) {
   expect_param(Points{{{0, 0}, {1, NAN}, {2, 1}, {3, 1}}}, -1, "p1.y");
   // Straight line: a status, not a NaN curve.
   const auto line = solve_s_curve(Points{{{0, 0}, {1, 0}, {2, 0}, {3, 0}}}, -1.0);
-  EXPECT_EQ(line.status, Status::no_solution);
-  EXPECT_EQ(line.shape, SCurveShape::straight);
+  EXPECT_EQ(line.summary.status, Status::no_solution);
+  EXPECT_EQ(line.info.shape, SCurveShape::straight);
+}
+
+// Every quadrature method of the registry (the end point of every trial Λ and of the result) ×
+// every root finder of the 1-D registry: each solves (residuals ≤ accept = 1e-10 by tanh-sinh) and
+// gives the curve of the default (gauss-legendre, toms748). kAgreeTol = accept: the end direction
+// as a function of Λ has a slope of order 1, so Λ and the length follow the integrator's error of
+// the end point (rk4, h = 1e-3: ~1e-11); the printed worst deviation is the measured margin.
+constexpr double kAgreeTol = 1e-10;
+
+TEST(SCurve, EveryIntegratorAndRootFinderGiveTheSameCurve) {
+  struct Input {
+    Points P;
+    double alpha;
+  };
+  const Points S{{{0, 0}, {1, 0}, {2, 1.5}, {3, 1}}};
+  const std::vector<Input> inputs{{S, -0.5},
+                                  {S, -1.0},
+                                  {S, -2.0},
+                                  {S, -4.0},
+                                  {Points{{{0, 0}, {1, 0}, {2, -1}, {3, -1}}}, -1.0},           // mirrored
+                                  {Points{{{0, 0}, {1, 0}, {2, 0.5}, {2.5, 1.5}}}, -0.5},       // C-shaped
+                                  {Points{{{0, 0}, {1, 1}, {2.5, 1.2}, {3, 0}}}, -2.0}};        // C-shaped, reversed
+  double worst = 0;
+  std::string worst_what;
+  for (const Input& in : inputs) {
+    const SCurveResult base = solve_s_curve(in.P, in.alpha);
+    ASSERT_EQ(base.summary.status, Status::ok) << base.summary.message;
+    const double chord = std::abs(in.P[3] - in.P[0]);
+    for (const MethodInfo& m : quadrature_methods()) {
+      for (const RootMethodInfo& root : root_methods()) {
+        SCurveOptions o;
+        o.integrator = make_quadrature(m.name);
+        o.solver = root.method;
+        const SCurveResult r = solve_s_curve(in.P, in.alpha, o);
+        const std::string what =
+            "alpha " + std::to_string(in.alpha) + " " + std::string(m.name) + " " + std::string(root.name);
+        SCOPED_TRACE(what);
+        ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+        EXPECT_EQ(r.summary.integrator, m.name);
+        EXPECT_EQ(r.summary.solver, root.name);
+        EXPECT_EQ(r.info.shape, base.info.shape);
+        EXPECT_EQ(r.info.mirrored, base.info.mirrored);
+        EXPECT_EQ(r.info.reversed, base.info.reversed);
+        expect_interpolates(r, in.P);
+        const double d = std::max({std::abs(r.info.lambda - base.info.lambda) / base.info.lambda,
+                                   std::abs(r.curve.length() - base.curve.length()) / chord,
+                                   std::abs(at(r, 0.5).position - at(base, 0.5).position) / chord,
+                                   std::abs(r.info.inflection_s.value_or(0) - base.info.inflection_s.value_or(0)) / chord});
+        if (d > worst) worst = d, worst_what = what;
+        EXPECT_LE(d, kAgreeTol);
+      }
+    }
+  }
+  std::printf("worst deviation from gauss-legendre + toms748: %.3e (%s)\n", worst, worst_what.c_str());
 }
 
 TEST(LinearQ, GradedGaussLegendreMatchesTanhSinh) {
@@ -152,12 +217,12 @@ TEST(LinearQ, ReferenceToleranceIsNotTheAccuracyLimit) {
     for (int i = 0; i < 40; ++i) {
       const double t0 = angle(rng), k0 = curvature(rng), t1 = angle(rng), k1 = curvature(rng);
       const G2Result r = solve_g2({{{0, 0}, t0, k0}, {{1, 0}, t1, k1}, alpha});
-      if (usable(r.status))
-        for (const auto& seg : r.curve.segments) compare(r.curve.law, seg);
+      if (r.usable())
+        for (const LaSegment& seg : r.curve.segments()) compare(seg.law(), seg.normalized());
       const Points P{std::complex<double>(0, 0), std::polar(1.0 / 3, t0),
                      std::complex<double>(1, 0) - std::polar(1.0 / 3, t1), std::complex<double>(1, 0)};
       const SCurveResult c = solve_s_curve(P, alpha);
-      if (usable(c.status)) compare(c.law, c.standard);
+      if (c.usable()) compare(c.curve.segments().front().law(), c.curve.segments().front().normalized());
     }
   }
   EXPECT_GT(segments, 300);
@@ -177,4 +242,4 @@ TEST(LinearQ, DividedDifferenceIsTheArcLimit) {
 }
 
 }  // namespace
-}  // namespace lac::hermite
+}  // namespace lac

@@ -139,7 +139,7 @@ TEST(ParallelSweep, RandomPlanarTrianglesSameWithOneAndManyThreads) {
 
 // Random G2 Hermite data as in experiments/g2_random.cpp, every solver.
 TEST(ParallelSweep, RandomG2ProblemsSameWithOneAndManyThreads) {
-  using namespace lac::hermite;
+  using namespace lac;
   std::mt19937_64 rng(20130501);
   std::uniform_real_distribution<double> angle(-std::numbers::pi / 2, std::numbers::pi / 2), curvature(-3, 3);
   std::vector<G2Problem> problems;
@@ -149,13 +149,17 @@ TEST(ParallelSweep, RandomG2ProblemsSameWithOneAndManyThreads) {
   }
   expect_same_with_1_and_n_threads(problems.size(), [&](size_t k) {
     G2Options o;
-    o.solver = static_cast<G2Solver>(k % 3);
+    o.solver = g2_solvers()[k % g2_solvers().size()].method;
     o.grid_fallback = false;
     const G2Result r = solve_g2(problems[k], o);
-    Fingerprint f{std::string(lac::to_string(r.status)), {}};
-    for (double v : {r.length, r.residual_position, r.residual_angle, r.residual_curvature}) f.numbers.push_back(bits(v));
-    f.numbers.push_back(static_cast<uint64_t>(r.iterations));
-    f.numbers.push_back(static_cast<uint64_t>(r.evaluations));
+    const Summary& e = r.summary;
+    Fingerprint f{std::string(lac::to_string(e.status)), {}};
+    for (double v : {r.curve.length(), e.residuals.position.value_or(-1), e.residuals.angle.value_or(-1),
+                     e.residuals.curvature.value_or(-1)})
+      f.numbers.push_back(bits(v));
+    f.numbers.push_back(static_cast<uint64_t>(e.iterations));
+    f.numbers.push_back(static_cast<uint64_t>(e.evaluations));
+    f.numbers.push_back(static_cast<uint64_t>(e.constructions));
     return f;
   });
 }

@@ -1,0 +1,153 @@
+#include "lac/constructions/detail/tangent_integral.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "lac/common/error.hpp"
+#include "lac/curves/detail/polyline.hpp"
+#include "lac/curves/planar/standard_form.hpp"
+
+namespace lac::detail {
+namespace {
+
+using Complex = std::complex<double>;
+
+// Adds a part: value, estimate, evaluations, and the worse of the two statuses.
+void add(IntegralResult<Complex>& total, const IntegralResult<Complex>& part) {
+  total.value += part.value;
+  total.error_estimate += part.error_estimate;
+  total.evaluations += part.evaluations;
+  if (severity(part.status) > severity(total.status)) {
+    total.status = part.status;
+    total.message = part.message;
+  }
+}
+
+// One part without a zero of q inside, anchored (U = 1) at a nonzero q: the closed form in θ of its
+// standard-form pieces.
+IntegralResult<Complex> igf_part(const std::vector<StandardPiece>& pieces, const Igf& m) {
+  IntegralResult<Complex> r;
+  for (const StandardPiece& piece : pieces) {
+    const auto [theta0, theta1] = theta_range(piece);
+    IntegralResult<Complex> c = m.integrate_theta(piece.curve.alpha(), piece.curve.lambda(), theta0, theta1);
+    // The piece's similarity without its offset: the difference of two placed points.
+    const Similarity& f = piece.to_user;
+    c.value = f.factor * (f.mirror ? std::conj(c.value) : c.value);
+    c.error_estimate *= std::abs(f.factor);
+    add(r, c);
+  }
+  return r;
+}
+
+}  // namespace
+
+IntegralResult<Complex> integrate_tangent_igf(const LaLaw& law, const LinearQ& seg, const Igf& m) {
+  IntegralResult<Complex> r;
+  if (law.alpha < 0 && seg.qa == 0 && seg.qb == 0) {  // κ ≡ 0: a straight segment, no standard form
+    r.value = seg.length() * std::polar(1.0, seg.phi_a);
+    return r;
+  }
+  const auto part = [&](double x, double y, double qx, double qy) {
+    return LinearQ{x, y, qx, qy, x == seg.ua ? seg.phi_a : seg.phi_at(law, x)};
+  };
+  // τ = |q|/|q_anchor| where U = kIgfMinU (|q| ∝ ρ^α = U^(α/(α−1)) with U = 1 at the anchor).
+  const double tau = law.alpha < 0 ? std::pow(kIgfMinU, law.alpha / (law.alpha - 1.0)) : 0.0;
+  // An empty part (a zero of q within rounding of an end) contributes nothing.
+  const auto graded = [&](const LinearQ& p) {
+    if (p.ub > p.ua) add(r, integrate_tangent_gl(law, p, GaussLegendre{}));
+  };
+  // A part whose standard form does not exist in double precision (|q| at its anchor so small, e.g.
+  // a subnormal end curvature, that ρ overflows) is integrated by the graded rule as well.
+  const auto closed = [&](const LinearQ& p) {
+    if (!(p.ub > p.ua)) return;
+    const LaSegment segment(law, p);  // InputError for data no segment has
+    std::vector<StandardPiece> pieces;
+    try {
+      pieces = to_standard_pieces(segment, Complex{});
+    } catch (const InputError&) {
+      graded(p);
+      return;
+    }
+    add(r, igf_part(pieces, m));
+  };
+  // One side of a zero of q: anchored at x unless q(x) = 0 (then at y, as to_standard_pieces does).
+  const auto side = [&](double x, double y, double qx, double qy) {
+    const bool at_x = qx != 0;
+    const double q_anchor = at_x ? qx : qy, q_far = at_x ? qy : qx;
+    if (!(std::abs(q_far) < tau * std::abs(q_anchor))) {
+      closed(part(x, y, qx, qy));
+      return;
+    }
+    // Stop the closed form where |q| = τ|q_anchor|; the rest, next to the zero, by Gauss–Legendre.
+    const double zero = x - qx * (y - x) / (qy - qx), anchor = at_x ? x : y;
+    const double c = zero + tau * (anchor - zero), qc = seg.q_at(c);
+    closed(at_x ? part(x, c, qx, qc) : part(c, y, qc, qy));
+    graded(at_x ? part(c, y, qc, qy) : part(x, c, qx, qc));
+  };
+  const bool crosses = law.alpha < 0 && seg.qa != 0 && seg.qb != 0 && (seg.qa < 0) != (seg.qb < 0);
+  if (crosses) {
+    const double zero = std::clamp(seg.ua - seg.qa / seg.slope(), seg.ua, seg.ub);
+    side(seg.ua, zero, seg.qa, 0.0);
+    side(zero, seg.ub, 0.0, seg.qb);
+  } else {
+    side(seg.ua, seg.ub, seg.qa, seg.qb);
+  }
+  return r;
+}
+
+namespace {
+
+// Whether every piece of the segment (each side of a zero of q, where φ is monotonic) turns at most
+// kMaxResolvedTurning: the domain of detail::integrate_tangent, applied to every method.
+bool resolvable(const LaLaw& law, const LinearQ& seg) {
+  const TangentPlan plan = tangent_plan(law, seg);
+  for (int i = 0; i < plan.count; ++i) {
+    const TangentPiece& p = plan.pieces[static_cast<size_t>(i)];
+    const double turning = p.graded ? std::abs(p.delta) * (1.0 - std::pow(p.t0, p.beta))
+                                    : std::abs(seg.phi_at(law, p.e) - seg.phi_at(law, p.u0));
+    if (!(turning <= kMaxResolvedTurning)) return false;
+  }
+  return true;
+}
+
+template <class M>
+Complex trial_integral(const void* method, const LaLaw& law, const LinearQ& seg, long& evaluations) {
+  const M& m = *static_cast<const M*>(method);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if constexpr (std::is_same_v<M, GaussLegendre>) {
+    return integrate_tangent(law, seg, evaluations, m.panels);
+  } else {
+    // The same trial domain for every method: a piece turning more than the fast path resolves is a
+    // failed evaluation here too, not seconds of an adaptive rule on 10^4–10^8 rad (fuzz_hermite:
+    // the simplex with gk-tanh-sinh spent 2.7 s on |κ·chord| ~ 1e8).
+    if (!resolvable(law, seg)) return {kNaN, kNaN};
+    IntegralResult<Complex> r;
+    if constexpr (std::is_same_v<M, Igf>) {
+      try {
+        r = integrate_tangent_igf(law, seg, m);
+      } catch (const InputError&) {  // trial data no segment has (e.g. q through 0 for α > 0)
+        return {kNaN, kNaN};
+      }
+    } else {
+      r = integrate_tangent_with(law, seg, m);
+    }
+    evaluations += r.evaluations;
+    return usable(r.status) ? r.value : Complex{kNaN, kNaN};
+  }
+}
+
+}  // namespace
+
+TrialIntegrator::TrialIntegrator(const AnyQuadrature& method, long limit) : limit_(limit) {
+  std::visit(
+      [this](const auto& m) {
+        method_ = &m;
+        integrate_ = &trial_integral<std::decay_t<decltype(m)>>;
+      },
+      method);
+}
+
+}  // namespace lac::detail

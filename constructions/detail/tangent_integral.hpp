@@ -1,0 +1,58 @@
+#pragma once
+// ∫ e^{iφ(u)} du over a segment in linear-q form (curves/planar/la_law.hpp) with any method of the
+// quadrature registry: what the 004 constructions integrate for every trial curve and for the
+// returned one. The methods that integrate any integrand go through LaSegment's kernels
+// (curves/planar/la_segment.hpp; gauss-legendre through its fast path); igf, a closed form of the
+// standard form, through the standard-form conversion (curves/planar/standard_form.hpp).
+#include <complex>
+#include <limits>
+
+#include "lac/curves/planar/detail/linear_q.hpp"
+#include "lac/curves/planar/la_segment.hpp"
+#include "lac/integrators/registry.hpp"
+
+namespace lac::detail {
+
+/// igf on segment data: each part of the segment on one side of a zero of q is one standard-form
+/// piece, C(θ1) − C(θ0) by the closed form. Next to a zero of q (α < 0: an inflection, ρ = ∞) the
+/// closed form's variable θ cannot resolve the arc length (U = 1 + (α−1)Λθ → 0 there and
+/// s_max − s ∝ U^(α/(α−1)); the zero itself is outside igf's open θ domain), so the part of a
+/// piece where U < kIgfMinU is integrated by the graded Gauss–Legendre rule instead (the same
+/// segment kernel as gauss-legendre), and so is a part that has no standard form in double
+/// precision (|q| at its anchor so small that ρ overflows, e.g. a subnormal end curvature). A zero
+/// of q within rounding of an end leaves an empty part, which contributes nothing. InputError for
+/// data LaSegment refuses.
+IntegralResult<std::complex<double>> integrate_tangent_igf(const LaLaw& law, const LinearQ& seg, const Igf& method);
+
+/// U = 1 + (α−1)Λθ at which an igf piece stops short of a zero of q (above: the θ rounding, ε/U
+/// relative in U, moves the arc length by ≲ 50ε of the piece for α ∈ [−5, 0)).
+inline constexpr double kIgfMinU = 1e-3;
+
+/// The integral of trial data (possibly non-finite or not a valid segment) with one method of the
+/// registry, chosen once: NaN when the method fails (an unusable status, or data no segment has),
+/// which the solvers treat as a failed evaluation. Every method has the fast path's domain: a
+/// piece (a side of a zero of q) turning more than kMaxResolvedTurning gives NaN without
+/// evaluating the integrand, so the choice of method does not change which trial curves exist.
+/// With a limit, a call whose `evaluations` counter has reached it gives NaN at once too (the
+/// construction's evaluation budget; the caller reports it). gauss-legendre is the fast path of
+/// detail::integrate_tangent without its error estimate (its value bit for bit). Keeps a pointer
+/// to the method: the method must outlive the integrator.
+class TrialIntegrator {
+ public:
+  explicit TrialIntegrator(const AnyQuadrature& method, long limit = std::numeric_limits<long>::max());
+  std::complex<double> operator()(const LaLaw& law, const LinearQ& seg, long& evaluations) const {
+    if (evaluations >= limit_) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    return integrate_(method_, law, seg, evaluations);
+  }
+  /// Calls whose counter has reached `limit` give NaN (no limit: the largest long).
+  void set_limit(long limit) { limit_ = limit; }
+  long limit() const { return limit_; }
+
+ private:
+  using Integrate = std::complex<double> (*)(const void*, const LaLaw&, const LinearQ&, long&);
+  const void* method_ = nullptr;
+  Integrate integrate_ = nullptr;
+  long limit_ = std::numeric_limits<long>::max();
+};
+
+}  // namespace lac::detail
