@@ -10,9 +10,9 @@
 //                            (as polyline computes them: both ends' domain checked once, then
 //                            LaCurve::frames_inside; the polyline's cost that is not
 //                            quadrature).
-// Targets (issue 4): best endpoint ≤ 1e-13 relative in ≤ 2 µs median on every row; RK4 h = 0.001
-// over a segment ≤ 150 µs median. Run with --benchmark_repetitions=5 for medians; the machine is
-// shared, so compare methods within one run.
+// Targets: best endpoint ≤ 1e-13 relative in ≤ 2 µs median on every row; RK4 h = 0.001
+// over a segment ≤ 150 µs median. Run with --benchmark_repetitions=5 for medians; absolute times
+// vary between runs, so compare methods within one run.
 #include <benchmark/benchmark.h>
 
 #include <complex>

@@ -1,5 +1,5 @@
 // Google Benchmark: planar G1 (monotonic) and compound-rhythm segments from control points.
-// Targets (issue 5): monotonic ≤ 20 µs median, compound ≤ 100 µs median per solve.
+// Targets: monotonic ≤ 20 µs median, compound ≤ 100 µs median per solve.
 // BM_Monotonic / BM_Compound cycle through 64 drawable control triangles (fixed seed, base angles in
 // [0.2, 1.2] rad, random orientation and scale) so that the time is a mix over shapes.
 // Run: build/bench_planar_segments --benchmark_repetitions=5 --benchmark_report_aggregates_only=true

@@ -1,5 +1,5 @@
 // Google Benchmark: quadratic LA curve (003) and the error-function inverses.
-// Targets (issue 7): κ(s) ≤ 200 ns per call; a 1000-point curve ≤ 200 µs.
+// Targets: κ(s) ≤ 200 ns per call; a 1000-point curve ≤ 200 µs.
 // Run: build/bench_quadratic [--benchmark_format=json]
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 // Google Benchmark: G1 and compound-rhythm LA space segments (000 §2.2, §4.3).
-// Issue 6 targets: compound segment ≤ 1 ms median, monotonic (G1) segment ≤ 0.5 ms median.
+// Targets: compound segment ≤ 1 ms median, monotonic (G1) segment ≤ 0.5 ms median.
 // BM_*_random cycle through 64 random drawable configurations (constructions/space_drawable_cases.hpp,
 // fixed seed; time per segment is the mean over them); BM_*_fig5a solve one fixed configuration
 // (000 Fig. 5a parameters, endpoints of experiments/space_figures.cpp). Run with

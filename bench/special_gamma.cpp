@@ -1,7 +1,7 @@
 // ns per call of the complex incomplete gamma function Γ(a, z) in each region, and of one LA
 // curve endpoint C(θ) by the igf closed form beside Gauss–Kronrod and RK4 on the same endpoint
 // (002's timing case α = 2, Λ = 1, θ ∈ [0, 1], plus cases that use the other igf regions).
-//   build/bench_special_gamma --benchmark_format=json   (the machine is shared: compare ratios)
+//   build/bench_special_gamma --benchmark_format=json   (times vary between runs: compare ratios)
 #include <benchmark/benchmark.h>
 
 #include <complex>

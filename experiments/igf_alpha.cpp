@@ -1,4 +1,4 @@
-// The igf closed form over α (issue 3): for each (α, Λ) of tests/reference/igf_reference.csv
+// The igf closed form over α: for each (α, Λ) of tests/reference/igf_reference.csv
 // (mpmath, 30+ digits), the worst relative error of C(θ1) − C(θ0) over its θ cases, which forms
 // of the closed form served them, how many fell back, and Gauss–Kronrod (tol 1e-14) on the same
 // intervals beside it. 002 reports that its incomplete-gamma closed form serves some α only;
@@ -136,14 +136,14 @@ int main(int argc, char** argv) {
       " cases in all; mpmath Gauss–Legendre at 30 digits, cross-checked against the incomplete-gamma closed form at 60 "
       "digits where |a| ≤ 60). Its cases are C(θ1) − C(θ0) from θ0 = 0 to θ1 ∈ {1e-8, 1e-5, 1e-3, 0.1, 1, 3, −0.5, −2} "
       "and 0.5 / 0.95 of each finite end of the θ domain (|θ| ≤ 30), plus steps of 1e-7 and 1e-3 away from 0. "
-      "Error is |C − C_ref| / |C_ref|; the issue's target is 1e-12. `igf forms used` counts the form the integrator "
+      "Error is |C − C_ref| / |C_ref|; the target is 1e-12. `igf forms used` counts the form the integrator "
       "chose per case (integrators/igf.hpp): `elementary` (Λ = 0 or α = 1), `lower_series` (|z| ≤ 1.5), `gamma` "
       "(scaled Γ(a, z) at both ends, |a| ≤ 10), `gamma_segment` (Γ difference by its segment series, short steps), "
       "`segment_series` (|a| > 10, i.e. 10/11 < α < 10/9, or where subtraction would cancel), `gauss_kronrod` "
       "(fallback, counted in `fell back`). Gauss–Kronrod (G10K21, tol 1e-14) on ρ(ψ)e^{iψ} over the same "
       "intervals is shown beside it." +
-      std::string(timing ? " Times are medians over the cases of the median of 5 batches (io::time_calls); the "
-                           "machine is shared and noisy, so compare ratios only."
+      std::string(timing ? " Times are medians over the cases of the median of 5 batches (io::time_calls); absolute "
+                           "times vary between runs, so compare ratios only."
                          : "");
   doc.notes = "Worst igf error over all cases: " + lac::io::sci(overall, 2) + "; fell back: " +
               std::to_string(total_fell_back) + "; not usable: " + std::to_string(total_not_ok) +

@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
       "`tests/reference/la_reference.csv` (" + std::to_string(cases.size()) +
       " cases: α from −100 to 100 incl. 0 and 1, Λ from 1e-3 to 100, θ up to 0.95 of its bound "
       "(|θ| ≤ 30), negative and small θ; mpmath at 40 digits, cross-checked against the incomplete-gamma "
-      "closed form). Error is |C − C_ref| / |C_ref|. Time is one call per case (wall clock, shared "
-      "2-core machine), so only the median and p90 over cases are meaningful. `not ok` counts results whose "
+      "closed form). Error is |C − C_ref| / |C_ref|. Time is one call per case (wall clock, varying "
+      "between runs), so only the median and p90 over cases are meaningful. `not ok` counts results whose "
       "status is not ok (or inputs the method rejects, e.g. an RK4 step count above its cap). Form: "
       "`theta` integrates ρ(ψ)e^{iψ} over θ, `s` integrates e^{iθ(u)} over s, `auto` picks per interval "
       "(curves/planar/la_position.hpp).";

@@ -17,7 +17,6 @@
 #include <iostream>
 #include <numeric>
 #include <optional>
-#include <fstream>
 #include <sstream>
 
 #include "lac/curves/planar/la_position.hpp"
@@ -138,13 +137,6 @@ std::string us(double seconds) { return fmt(seconds * 1e6, 3); }
 std::string spread_cell(const lac::io::TimingStats& t) {
   return us(t.median) + " [" + us(t.p10) + ", " + us(t.p90) + "]";
 }
-/// The 1-minute load average (Linux), to state how busy the machine was; empty when unavailable.
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string first;
-  return (in >> first) ? first : std::string();
-}
-
 double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); }
 
 }  // namespace
@@ -244,14 +236,12 @@ int main(int argc, char** argv) {
     }
 
     const std::string command = lac::io::command_line(argc, argv);
-    const std::string load_at_end = load_average();
     std::string settings = "Settings: methods " ;
     for (size_t k = 0; k < methods.size(); ++k) settings += (k ? "; `" : "`") + lac::describe(methods[k].method) + "`";
     settings += "; form " + std::string(lac::to_string(s.form)) + "; " + std::to_string(s.samples) + " samples of about " +
                 fmt(s.sample_seconds * 1e3, 3) + " ms each per cell; polyline " + std::to_string(s.points) +
-                " points. Machine: shared 2-core machine, other builds and tests running (noisy; 1-minute load "
-                "average " + load_at_end + " at the end of the run): wall-clock medians include other processes' "
-                "time, so compare ratios within one run, not absolute times across runs; bench_p002 gives CPU times.";
+                " points. Wall-clock medians vary between runs, so compare ratios within one run, not absolute "
+                "times across runs; bench_p002 gives CPU times.";
     const std::string paper_note =
         "Paper columns: 002 Appendix A, seconds per segment, average of 5 runs, **Mathematica 8 on an Intel Pentium D "
         "2.8 GHz** (the paper's RK4 uses h = 0.001).";
@@ -357,7 +347,7 @@ int main(int argc, char** argv) {
       doc.title = "002 Appendix A: speed ratios between methods, paper and ours";
       doc.command = command;
       doc.description = "Mean over the 18 rows of the median time per call; ratios to the first method (also "
-                        "from the p10 times, less affected by the load of the shared machine; nan: a method whose "
+                        "from the p10 times, which vary less between runs; nan: a method whose "
                         "polyline was not run on some row). 002: RK4 "
                         "is 9.3x faster than IGF and 99.4x faster than Gauss-Kronrod (the ratios of its column "
                         "means, recomputed here from its typed table). " + paper_note + " " + settings;
@@ -389,8 +379,8 @@ int main(int argc, char** argv) {
       doc.description = "Each candidate configuration computes the endpoint C(theta = 1) on all 18 rows; those whose "
                         "worst relative error is at most " + sci(target, 1) +
                         " (and whose status is ok) are timed on every row; the best has the smallest slowest-row "
-                        "p10 (the machine is shared and loaded, so medians carry other processes' time; p10 is the "
-                        "nearest to the uncontended cost). The issue's target (<= 2 us median on every row) is "
+                        "p10 (it varies less between runs than the median and is the nearest to the undisturbed cost "
+                        "of a call). The target (<= 2 us median on every row) is "
                         "judged with bench_p002's CPU times, see docs/p002.md. " + settings;
       doc.notes = best ? "Best: `" + best->label + "`, slowest row p10 " + us(best->worst_p10) + " us (median " +
                              us(best->worst_median) + " us), mean of the row medians " + us(best->mean_median) + " us."

@@ -145,7 +145,7 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
       "in double precision). By 001 §4 segment 0 (α0) is always put at the end with the shorter leg (the larger base "
       "angle), so every map is symmetric in b0 ↔ b2; the diagonal (isosceles triangles) is the circular arc, Λ0 = 0. Heatmaps: results/figures/planar_drawable.png. Wall time " +
       lac::io::fmt(seconds, 3) + " s on " + std::to_string(threads) +
-      " threads (shared machine; a timing only for planning larger grids).";
+      " threads (a timing only for planning larger grids; it varies between runs).";
   doc.notes =
       "001 leaves the drawable regions as future work, so there is nothing to compare with. For monotonic "
       "0 < α ≤ 1 the length is unbounded as Λ → Λmax, the start angle tends to the turning, and every triangle is "

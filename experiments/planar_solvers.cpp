@@ -116,10 +116,10 @@ int main(int argc, char** argv) {
       "every solver then runs on the same cases. Success: status ok and Λ0 within 1e-9 (relative) of bisection's. "
       "Time per solve from the steady clock around one call (includes the bracket probes and all trial curves; "
       "positions by Gauss–Kronrod with tanh-sinh near singular ends), median and 10th/90th percentiles over the "
-      "cases. Iterations are the root finder's; trial curves include the bracket probes. The machine is shared "
-      "with other jobs and noisy: compare ratios within this run, not absolute times across runs.";
+      "cases. Iterations are the root finder's; trial curves include the bracket probes. Absolute times vary "
+      "between runs: compare ratios within this run, not absolute times across runs.";
   doc.notes =
-      "Issue 5 targets ≤ 20 µs (monotonic) and ≤ 100 µs (compound) median per solve; the Google Benchmark "
+      "Targets: ≤ 20 µs (monotonic) and ≤ 100 µs (compound) median per solve; the Google Benchmark "
       "bench_planar_segments measures the same code in a tight loop.";
   lac::io::write_result_table(out, "planar_solvers", doc, t);
   std::cout << t.markdown();

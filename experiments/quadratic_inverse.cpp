@@ -4,8 +4,8 @@
 //
 // Accuracy is measured against the committed mpmath references (tests/reference/erf_family.csv,
 // tests/reference/quadratic.csv; generators beside them). Timing: io::time_calls (batches,
-// median and p10/p90 of the per-call time) on a shared, loaded machine: read ratios, not
-// absolute numbers. Writes quadratic_inverse.md/.csv, quadratic_kappa.md/.csv and
+// median and p10/p90 of the per-call time); absolute times vary between runs: read ratios,
+// not absolute numbers. Writes quadratic_inverse.md/.csv, quadratic_kappa.md/.csv and
 // quadratic_timing.md/.csv.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -127,7 +127,7 @@ void inverse_table(const std::string& ref_dir, const std::string& out, const Set
       "`failures`: inputs the method cannot answer (003's bisection bounds |x| ≤ 26 for erfi, ≤ 5 for erf, i.e. "
       "|y| > erfi(26) ≈ 8.3e291 or |y| > erf(5) = 1 − 1.5e-12); the error column covers the other cases. Iterations: "
       "Halley/Newton steps or bisection halvings (each one function evaluation). Time per call cycles through the same "
-      "inputs (machine shared and loaded: compare ratios).";
+      "inputs (absolute times vary between runs: compare ratios).";
   doc.notes =
       "003 gives no Newton/bisection switch point; ours uses Newton from 0 for |x| ≤ 0.75 and bisection elsewhere. Its "
       "bisection on erf compares erf(mid) with y, which resolves x only to eps/erf'(x) next to ±1; erfc-based "
@@ -269,13 +269,13 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
   doc.title = "Quadratic LA curve: time per κ(s), s(κ), θ(s) and per " + std::to_string(points) + "-point curve";
   doc.command = command;
   doc.description =
-      "io::time_calls: median and p10/p90 of the per-call wall time over batches (machine shared by several developers "
-      "and loaded: absolute numbers are pessimistic, compare ratios; `bench/quadratic.cpp` has the Google Benchmark "
+      "io::time_calls: median and p10/p90 of the per-call wall time over batches (absolute numbers vary "
+      "between runs, compare ratios; `bench/quadratic.cpp` has the Google Benchmark "
       "version). s from 99 % of a finite bound (±3 toward an unbounded end), points uniform in s. Each curve point "
       "needs κ(s) and θ(s), each quadrature node one κ(s) inversion; rk4 takes one step per segment (3 evaluations "
       "per segment). `end-point error`: distance of the last point from the same polyline by Gauss–Kronrod at tol 1e-14.";
   doc.notes =
-      "Issue 7's targets are κ(s) ≤ 200 ns and a 1000-point curve ≤ 200 µs (CPU time in `bench_quadratic`, "
+      "The targets are κ(s) ≤ 200 ns and a 1000-point curve ≤ 200 µs (CPU time in `bench_quadratic`, "
       "docs/quadratic.md). κ(s): a table start for erfi⁻¹/erfc⁻¹ in log form and one Halley step on the closed form "
       "(accepted when its cubic error term is below rounding). The generic quadrature path cannot meet the curve "
       "target: every integrand evaluation inverts κ(s), so a 1000-point curve costs at least ~3000 inversions. "

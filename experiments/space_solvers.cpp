@@ -31,7 +31,7 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-// CPU time of this thread: less sensitive than wall time to other jobs on a shared machine.
+// CPU time of this thread: less sensitive than wall time to other processes.
 double thread_cpu_seconds() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -123,8 +123,8 @@ int main(int argc, char** argv) {
       "r_θ ∈ [0.3, 0.7], type 1 or 2, then a random rotation, translation and scale; the solver is not told "
       "(Λ0, ν0)). Success: end-tangent error ≤ 1e-11 rad (the position constraints hold by construction). "
       "Time is wall clock per segment including failures (single calls, `io::Stopwatch`), on " + cpu_model() +
-      ", a machine shared with other jobs during the run: wall times are inflated and noisy (p10–p90 shown); "
-      "the thread CPU time (clock_gettime CLOCK_THREAD_CPUTIME_ID) is less affected. "
+      "; wall times vary between runs (p10–p90 shown); "
+      "the thread CPU time (clock_gettime CLOCK_THREAD_CPUTIME_ID) varies less. "
       "A construction is one integration of the Frenet–Serret equations to the cone(s) for a trial (Λ0, ν0). "
       "simplex is 000's modified downhill simplex on the end-tangent angle; ceres is Ceres Levenberg–Marquardt and "
       "newton a damped Newton iteration, both on the stereographic end-tangent residual; magnus6 is the order-6 "

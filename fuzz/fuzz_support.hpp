@@ -198,7 +198,7 @@ class FuzzInput {
 inline std::string show(double v) { return format_number(v); }
 
 /// Reports a hang when the call that started at construction used more than the bound in CPU
-/// time (process CPU time, so that a loaded shared machine does not make false hangs; calls that
+/// time (process CPU time, so that other processes on the machine do not make false hangs; calls that
 /// never return are caught by libFuzzer's wall-clock -timeout).
 class CallTimer {
  public:

@@ -29,7 +29,7 @@ namespace lac {
 
 struct IgfOptions {
   /// Relative accuracy asked of |C(θ1) − C(θ0)|: a form is used only if its error estimate is
-  /// at most tol·|result|. Default 1e-12 (the target; the estimates bound the true error on
+  /// at most tol·|result|. Default 1e-12 (the accuracy target; the estimates bound the true error on
   /// every reference case). Valid: [1e-15, 1e-2].
   double tol = 1e-12;
   /// Cap on the pieces of the segment series (e.g. θ spanning thousands of radians); beyond

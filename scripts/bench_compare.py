@@ -6,10 +6,10 @@ Usage: scripts/bench_compare.py --before DIR --after DIR [--out results] [--name
 
 For every benchmark executable named in GROUPS that exists in both folders, runs the before and the
 after binary alternately (`--rounds` rounds, each `--repetitions` repetitions, the same filter) so
-that both see the same machine load, and collects the CPU time of every repetition. Writes
+that both run under the same conditions, and collects the CPU time of every repetition. Writes
   <out>/<name>_bench_before.json, <out>/<name>_bench_after.json  (Google Benchmark's own JSON, all runs)
   <out>/<name>_bench.md, <out>/<name>_bench.csv  (per benchmark: median and spread of each, ratio)
-The machine is shared: only the ratio of medians from one run is a claim, never a single time.
+Absolute times vary between runs: only the ratio of medians from one run is a claim, never a single time.
 """
 import argparse
 import json
@@ -106,7 +106,7 @@ def main():
         f.write(f"# Benchmarks before and after: {a.before_label} vs {a.after_label}\n\n")
         f.write(f"Written by `scripts/bench_compare.py --name {a.name}`. CPU: {cpu_model()}; compiler: {compiler}; both builds "
                 "Release (-O3 -DNDEBUG, as scripts/build.sh configures them). The two builds ran alternately, {a.rounds} rounds of {a.repetitions} repetitions "
-                "each, on a shared machine: CPU time per call, median over all repetitions, min–max beside it; "
+                "each: CPU time per call, median over all repetitions, min–max beside it; "
                 "ratio = after median / before median (< 1: faster).\n\n")
         f.write("| benchmark | before µs (min–max) | after µs (min–max) | ratio |\n|---|---|---|---|\n")
         for r in rows:

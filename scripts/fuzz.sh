@@ -25,8 +25,8 @@
 # Exit status 0 when no target has a finding, 3 otherwise (1 on build errors).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# --short: executions per target, ~60 % of the 120 s cap at the rates measured on the shared,
-# loaded 2-core machine (docs/robustness.md; executions/s in-process under the sanitizers, over
+# --short: executions per target, ~60 % of the 120 s cap at the rates measured on a
+# 2-core machine (docs/robustness.md; executions/s in-process under the sanitizers, over
 # the whole run: the first executions are cheaper), so that the run ends by its count
 # (deterministic), not by the cap.
 short_runs() {

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Heat maps of the worst relative endpoint error over (alpha, Lambda) from results/igf_alpha.csv
-(written by exp_igf_alpha): the igf closed form beside Gauss-Kronrod, with the issue's 1e-12 target.
+(written by exp_igf_alpha): the igf closed form beside Gauss-Kronrod, with the 1e-12 target.
 
 Usage: igf_alpha.py RESULTS_DIR. Writes RESULTS_DIR/figures/igf_alpha.png.
 """

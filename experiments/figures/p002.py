@@ -115,7 +115,7 @@ def timing_figure(results, out):
         ax.set_ylabel("microseconds per call")
         ax.grid(True, which="major", axis="y", alpha=0.3)
         ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.005, 1.0))
-    axes[0].set_title("ours: endpoint C(theta = 1), median with p10-p90 (shared, loaded 2-core machine)", fontsize=10)
+    axes[0].set_title("ours: endpoint C(theta = 1), median with p10-p90 (wall time; varies between runs)", fontsize=10)
     axes[1].set_title("ours: polyline of the segment (theta from 0 to 1), median with p10-p90", fontsize=10)
     cols = [("rk4_seconds", "RK4 h = 0.001"), ("igf_seconds", "IGF"), ("gk_seconds", "Gauss-Kronrod")]
     by_key = {(p["alpha_text"], p["lambda"]): p for p in paper}

@@ -1,17 +1,17 @@
 #!/usr/bin/env python3
-"""Before/after table of bench_quadratic (issue 7) from two committed Google Benchmark JSON files.
+"""Before/after table of bench_quadratic from two committed Google Benchmark JSON files.
 
 Usage: quadratic_bench.py RESULTS_DIR
 Reads RESULTS_DIR/quadratic_bench_before.json and quadratic_bench_after.json (written by
 build/bench_quadratic --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 --benchmark_out=FILE --benchmark_out_format=json) and writes RESULTS_DIR/quadratic_bench.md:
-median CPU time per benchmark (the machine is shared, CPU time is the less noisy measure).
+median CPU time per benchmark (CPU time varies less between runs than wall time).
 """
 import json
 import os
 import sys
 
-# Issue 7's targets. κ(s) by 003's hybrid inverse (benchmark argument 1) is there for comparison only.
+# The targets. κ(s) by 003's hybrid inverse (benchmark argument 1) is there for comparison only.
 TARGETS = {"BM_KappaOfS": (200e-9, "≤ 200 ns"), "BM_HermitePolyline1000": (200e-6, "≤ 200 µs"),
            "BM_Polyline1000": (200e-6, "≤ 200 µs")}
 SCALE = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
@@ -45,12 +45,12 @@ def main():
     before, date_before = medians(before_path)
     after, date_after = medians(after_path)
     lines = [
-        "# bench_quadratic: median CPU time before and after the issue 7 optimisations",
+        "# bench_quadratic: median CPU time before and after the optimisations",
         "",
         "Written by `experiments/figures/quadratic_bench.py` from `quadratic_bench_before.json` (%s) and "
         "`quadratic_bench_after.json` (%s), each from `build/bench_quadratic --benchmark_repetitions=3 "
-        "--benchmark_report_aggregates_only=true --benchmark_out=FILE --benchmark_out_format=json` on a shared "
-        "2-core machine (CPU time: the wall time includes waiting for the other jobs)." % (date_before, date_after),
+        "--benchmark_report_aggregates_only=true --benchmark_out=FILE --benchmark_out_format=json` "
+        "(CPU time: it varies less between runs than the wall time)." % (date_before, date_after),
         "",
         "| benchmark | what | CPU before | CPU after | after/before | target | met |",
         "|---|---|---|---|---|---|---|",

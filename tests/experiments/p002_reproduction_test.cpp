@@ -18,7 +18,7 @@ constexpr double kOrderLow = 3.9, kOrderHigh = 4.1;      // RK4 observed order w
 constexpr double kTruncationDominates = 100;              // error above this many eps |C|: rounding negligible
 constexpr double kPaperFactorLow = 1, kPaperFactorHigh = 12;  // ours / paper at h = 0.1, 0.01 (documented 2.8-11.9)
 constexpr double kGkRelative = 1e-14;                     // our G-K endpoint, Appendix B rows
-constexpr double kAppendixATarget = 1e-13;                // issue 4: best method endpoint, relative
+constexpr double kAppendixATarget = 1e-13;                // target: best method endpoint, relative
 constexpr double kWrongReferenceFactor = 1e3;             // flagged paper G-K cells exceed ours by at least this
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 

@@ -23,7 +23,7 @@ namespace {
 using cplx = std::complex<double>;
 
 // Tolerances, relative to |C(θ1) − C(θ0)|.
-constexpr double kEndpointTolerance = 1e-12;  // issue 3: endpoint relative error ≤ 1e-12 of |C|
+constexpr double kEndpointTolerance = 1e-12;  // target: endpoint relative error ≤ 1e-12 of |C|
 // The error estimate must bound the true error, up to this factor (estimates are a-priori
 // rounding bounds, not guarantees).
 constexpr double kEstimateSlack = 1.0;

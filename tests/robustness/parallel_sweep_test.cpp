@@ -1,4 +1,4 @@
-// Parallel sweeps give the same results with 1 and with N threads (issue 8): the solvers keep no
+// Parallel sweeps give the same results with 1 and with N threads: the solvers keep no
 // shared mutable state, so a TBB sweep over independent problems must reproduce the sequential
 // answers bit for bit. Covered: the drawable-region sweep of planar segments (the cells of
 // experiments/planar_drawable.cpp, in-process and through the experiment executable with

@@ -27,7 +27,7 @@ constexpr Tolerance kTolerances[] = {
     {"erfi", 2e-14, "libcerf; plus 2 eps x^2 (rounding of x^2 inside e^(x^2))"},
     {"dawson", 2e-14, "libcerf"},
     {"erfcx", 2e-14, "libcerf; plus 2 eps x^2 for x < 0 (rounding of x^2 inside e^(x^2))"},
-    {"erfi_inv", 1e-14, "issue 3 target, over the whole double range"},
+    {"erfi_inv", 1e-14, "accuracy target, over the whole double range"},
     {"erf_inv", 1e-14, "Boost.Math; exact for the double argument, also next to ±1"},
     {"erfi_inv_log", 1e-14, "erfi(x) = ±e^L for L up to 1e6"},
     {"erfc_inv_log", 1e-13, "Boost erfc_inv(e^L) for L > −700 (e^L rounding, error ~ eps·|L|), Newton below"},

@@ -26,12 +26,12 @@ struct Tolerance {
   const char* why;
 };
 constexpr Tolerance kTolerances[] = {
-    {GammaIncRegion::series, 1e-13, "issue 3 target"},
-    {GammaIncRegion::continued_fraction, 1e-13, "issue 3 target"},
-    {GammaIncRegion::asymptotic, 1e-13, "issue 3 target"},
-    {GammaIncRegion::segment_series, 1e-13, "issue 3 target"},
-    {GammaIncRegion::lower_series, 1e-13, "issue 3 target"},
-    {GammaIncRegion::subtraction, 1e-13, "issue 3 target"},
+    {GammaIncRegion::series, 1e-13, "accuracy target"},
+    {GammaIncRegion::continued_fraction, 1e-13, "accuracy target"},
+    {GammaIncRegion::asymptotic, 1e-13, "accuracy target"},
+    {GammaIncRegion::segment_series, 1e-13, "accuracy target"},
+    {GammaIncRegion::lower_series, 1e-13, "accuracy target"},
+    {GammaIncRegion::subtraction, 1e-13, "accuracy target"},
 };
 
 double tolerance(GammaIncRegion r) {
