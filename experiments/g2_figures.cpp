@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
   doc.notes =
       "As 004 observes for its Fig. 7, the curvature of a triple LA curve need not be monotone; small end curvatures "
       "(first fig7 row, like 004 Figs. 4 and 6) give a curvature profile that rises and falls. The ms column is wall "
-      "time on a shared, loaded machine.";
+      "time; wall times vary between runs.";
   io::write_result_table(out, "g2_figures", doc, t);
   return 0;
 }

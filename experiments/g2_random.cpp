@@ -225,8 +225,8 @@ int main(int argc, char** argv) {
       std::to_string(seed + 1) +
       "). The Fig. 2 decision classifies each input as S- or "
       "C-shaped; both are solved by a search on Λ (`bisection` as in 004, or Boost TOMS 748). Solved: status ok and "
-      "end point / end tangents within 1e-10 (end point by tanh-sinh). Times (S-shaped inputs only) per call on a "
-      "shared, loaded machine.";
+      "end point / end tangents within 1e-10 (end point by tanh-sinh). Times (S-shaped inputs only) are per call; "
+      "wall times vary between runs.";
   ds.notes = "004 reports " + io::fmt(kPaperScurveMs[0]) + "–" + io::fmt(kPaperScurveMs[1]) +
              " ms for the parameter search of an S-curve (Core i7 3.4 GHz; 004 §2.5). The C-shaped inputs are solved "
              "by one α < 0 segment whose curvature decreases from the tighter end to at most the inflection; when the "

@@ -105,7 +105,7 @@ def main():
     with open(os.path.join(a.out, f"{a.name}_bench.md"), "w") as f:
         f.write(f"# Benchmarks before and after: {a.before_label} vs {a.after_label}\n\n")
         f.write(f"Written by `scripts/bench_compare.py --name {a.name}`. CPU: {cpu_model()}; compiler: {compiler}; both builds "
-                "Release (-O3 -DNDEBUG, as scripts/build.sh configures them). The two builds ran alternately, {a.rounds} rounds of {a.repetitions} repetitions "
+                f"Release (-O3 -DNDEBUG, as scripts/build.sh configures them). The two builds ran alternately, {a.rounds} rounds of {a.repetitions} repetitions "
                 "each: CPU time per call, median over all repetitions, min–max beside it; "
                 "ratio = after median / before median (< 1: faster).\n\n")
         f.write("| benchmark | before µs (min–max) | after µs (min–max) | ratio |\n|---|---|---|---|\n")
