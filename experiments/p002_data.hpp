@@ -15,8 +15,10 @@
 
 namespace lac::p002 {
 
-/// Default locations, found from this header's own path so that any working directory works.
-inline std::filesystem::path source_root() { return std::filesystem::path(__FILE__).parent_path().parent_path(); }
+/// Default locations under the source tree (LAC_SOURCE_DIR, set by the build for experiments, tests
+/// and benchmarks), so that any working directory works. __FILE__ is no substitute: a compiler
+/// cache with a base directory makes it relative to the build folder.
+inline std::filesystem::path source_root() { return LAC_SOURCE_DIR; }
 inline std::filesystem::path default_reference_csv() { return source_root() / "tests/reference/p002_truncation.csv"; }
 inline std::filesystem::path default_appendix_a_csv() { return source_root() / "experiments/data/p002_appendix_a.csv"; }
 inline std::filesystem::path default_appendix_b_csv() { return source_root() / "experiments/data/p002_appendix_b.csv"; }

@@ -5,14 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "lac/common/error.hpp"
 #include "lac/integrators/registry.hpp"
+#include "tests/support/reference_csv.hpp"
 
 namespace lac {
 namespace {
@@ -131,28 +130,17 @@ struct ReferenceRow {
 };
 
 std::vector<ReferenceRow> read_reference() {
-  std::ifstream in(std::string(LAC_REFERENCE_DIR) + "/hermite_clothoid.csv");
+  const test::CsvTable t = test::read_reference_csv("hermite_clothoid.csv");
   std::vector<ReferenceRow> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::stringstream ss(line);
-    std::vector<double> v;
-    std::string item;
-    while (std::getline(ss, item, ',')) v.push_back(std::stod(item));
-    if (v.size() != 16) continue;
+  for (size_t k = 0; k < t.rows.size(); ++k) {
+    const auto v = [&](const char* name) { return t.number(k, name); };
     ReferenceRow r;
-    r.problem = {{{v[1], v[2]}, v[3], v[4]}, {{v[5], v[6]}, v[7], v[8]}, -1.0};
-    r.length = v[9];
-    r.kappa_s1 = v[10];
-    r.kappa_s2 = v[11];
-    r.mid = {v[12], v[13]};
-    r.quarter = {v[14], v[15]};
+    r.problem = {{{v("x0"), v("y0")}, v("theta0"), v("kappa0")}, {{v("x1"), v("y1")}, v("theta1"), v("kappa1")}, -1.0};
+    r.length = v("length");
+    r.kappa_s1 = v("kappa_s1");
+    r.kappa_s2 = v("kappa_s2");
+    r.mid = {v("xm"), v("ym")};
+    r.quarter = {v("xq"), v("yq")};
     rows.push_back(r);
   }
   return rows;

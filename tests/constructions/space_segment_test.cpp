@@ -15,6 +15,7 @@
 #include "lac/constructions/space_drawable_cases.hpp"
 #include "lac/constructions/space_segment.hpp"
 #include "tests/support/space_tolerances.hpp"
+#include "tests/support/input_error.hpp"
 
 namespace lac {
 namespace {
@@ -359,14 +360,7 @@ TEST(SpaceSegment, UndrawableConfigurationIsNotConvergedNotAnException) {
 }
 
 TEST(SpaceSegment, BadInputNamesTheParameter) {
-  auto param = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.parameter();
-    }
-    return std::string("<no error>");
-  };
+  const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   const G1SpaceSpec g{0, 0, 0.1, TorsionType::type1};
   const CompoundSpaceSpec k{-1, 1, -1, 1, 0.1, 0.5, TorsionType::type1};
   const SpaceEndpoints good{Vec3::Zero(), Vec3::UnitX(), Vec3(1, 1, 0.2), Vec3(0, 1, 0.3)};

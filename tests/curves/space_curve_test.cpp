@@ -14,6 +14,7 @@
 #include "lac/curves/space/space_curve.hpp"
 #include "tests/support/space_tolerances.hpp"
 #include "tests/support/reference_csv.hpp"
+#include "tests/support/input_error.hpp"
 
 namespace lac {
 namespace {
@@ -203,14 +204,7 @@ TEST(Frenet, FrameStaysOrthonormalOverLongIntegrations) {
 }
 
 TEST(SpaceCurveInput, InvalidParametersNameTheParameter) {
-  auto param = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.parameter();
-    }
-    return std::string("<no error>");
-  };
+  const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   EXPECT_EQ(param([] { LaSpaceCurve(NAN, 0, 1, 1, 1, TorsionType::type1); }), "alpha");
   EXPECT_EQ(param([] { LaSpaceCurve(0, INFINITY, 1, 1, 1, TorsionType::type1); }), "beta");
   EXPECT_EQ(param([] { LaSpaceCurve(0, 0, -1, 1, 1, TorsionType::type1); }), "lambda");
@@ -426,14 +420,7 @@ TEST(SpaceCurve, AFailedSampleIsFlaggedAndShiftsNoOther) {
 }
 
 TEST(SpaceCurve, InvalidInputNamesTheParameter) {
-  auto param = [](auto&& f) {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.parameter();
-    }
-    return std::string("<no error>");
-  };
+  const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   const SpaceCurve c = two_piece_curve(false);
   EXPECT_EQ(param([&] { c.frame_at(-0.1); }), "s");
   EXPECT_EQ(param([&] { c.kappa_at(c.length() * 1.01); }), "s");

@@ -12,6 +12,7 @@
 #include "lac/common/error.hpp"
 #include "lac/solvers/nonlinear.hpp"
 #include "tests/support/solver_registry.hpp"
+#include "tests/support/input_error.hpp"
 
 namespace lac {
 namespace {
@@ -271,14 +272,7 @@ TEST(Nonlinear, NewtonTrialLimitAndHalvings) {
 }
 
 TEST(Nonlinear, InvalidInputThrows) {
-  auto param = [](auto&& f) -> std::string {
-    try {
-      f();
-    } catch (const InputError& e) {
-      return e.parameter();
-    }
-    return "";
-  };
+  const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   NonlinearOptions o;
   o.newton.fd_step = 2;
   EXPECT_EQ(param([&] { solve(NonlinearMethod::newton, kCircleLine, Vec2(0, 0), o); }), "fd_step");
