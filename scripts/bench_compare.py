@@ -23,7 +23,7 @@ import sys
 GROUPS = {
     "bench_hermite": "BM_G2_(newton|paper|ceres)_fast|BM_SCurve",
     "bench_planar_segments": ".",
-    "bench_space": "random",
+    "bench_space": "random|fig5a",
     "bench_p002": "Segment|Frames|Polyline|Endpoint/(rk4_h=1e-3|gauss-kronrod_tol=1e-14|igf[^/]*)/alpha=(-1|2|0)/",
     "bench_quadratic": "Polyline|KappaOfS/./0",
 }
