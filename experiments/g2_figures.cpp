@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
          "piece's start; theta tangent angle; kappa signed curvature\n";
   pts << "figure,label,alpha,piece,S,s,x,y,theta,kappa\n";
   pts.precision(12);
+  lac::io::write_numbers_plainly(pts);
   // S = s / length, uniform (PlanarCurve::sample is uniform in s).
   auto write = [&](const std::string& fig, const std::string& label, double alpha, int piece,
                    const std::vector<PositionResult>& v) {

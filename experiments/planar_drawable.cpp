@@ -80,6 +80,7 @@ std::string row_text(size_t index, const Cell& c, int grid, const Outcome& o) {
   const Panel& p = kPanels[c.panel];
   std::ostringstream os;
   os.precision(10);
+  lac::io::write_numbers_plainly(os);
   os << index << ',' << c.panel << ',' << p.alpha0 << ',' << p.alpha1 << ',' << p.r << ',' << angle(c.i, grid) << ','
      << angle(c.j, grid) << ',' << o.status << ',' << o.lambda0 << ',' << o.iterations;
   return os.str();

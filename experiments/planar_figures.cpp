@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
          " kappa signed curvature; piece 0 = segment of alpha0 (at a0), 1 = segment of alpha1\n";
   pts << "figure,alpha0,alpha1,r,piece,s,x,y,theta,kappa\n";
   pts.precision(12);
+  lac::io::write_numbers_plainly(pts);
 
   lac::io::Table t;
   t.columns = {"figure", "α0", "α1", "r", "status", "Λ0", "Λ1 (001 Eq. 3.5)", "ρ at joint", "joint share of length",

@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
   data << "# written by: " << lac::io::command_line(argc, argv) << "\n";
   data << "figure,alpha,gamma,lambda,s,x,y,theta,kappa,lcg_log_rho,lcg_from_curve,lcg_parabola\n";
   data.precision(9);
+  lac::io::write_numbers_plainly(data);
   double worst_lcg = 0;
   for (const auto& fc : figure_curves()) {
     const lac::QuadraticLaCurve c(fc.alpha, fc.gamma, fc.lambda);

@@ -56,6 +56,7 @@ std::string vec_text(const lac::Vec3& v) {
 void write_points(std::ofstream& csv, const std::string& figure, double r_theta, const lac::SpaceCurve& c) {
   constexpr int kPoints = 240;
   csv.precision(10);
+  lac::io::write_numbers_plainly(csv);
   const auto& pieces = c.pieces();
   double total = 0;
   for (const auto& p : pieces) total += p.s_end - p.s_begin;

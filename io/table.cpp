@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <locale>
 #include <sstream>
 #include <stdexcept>
 
@@ -49,15 +50,25 @@ std::string Table::csv() const {
 
 std::string fmt(double v, int digits) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v + 0.0);  // + 0.0: −0 becomes 0
   return buf;
 }
 
 std::string sci(double v, int digits) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
+  std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v + 0.0);
   return buf;
 }
+
+namespace {
+struct PlainNumbers : std::num_put<char> {
+  iter_type do_put(iter_type out, std::ios_base& str, char_type fill, double v) const override {
+    return std::num_put<char>::do_put(out, str, fill, v + 0.0);
+  }
+};
+}  // namespace
+
+void write_numbers_plainly(std::ostream& os) { os.imbue(std::locale(os.getloc(), new PlainNumbers)); }
 
 void write_result_table(const std::filesystem::path& dir, const std::string& stem, const ResultDoc& doc, const Table& t) {
   std::filesystem::create_directories(dir);

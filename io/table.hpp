@@ -2,6 +2,7 @@
 // Result tables written by programs: Markdown and CSV side by side, each stating the
 // command that wrote it. Experiments call write_result_table; nothing in results/ is typed.
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -16,10 +17,13 @@ struct Table {
   std::string csv() const;
 };
 
-/// Formats a number for tables: %.*g with `digits` significant digits.
+/// Formats a number for tables: %.*g with `digits` significant digits (−0 is written 0, as in
+/// fmt, sci and streams set up by write_numbers_plainly: a sign of zero is rounding, not data).
 std::string fmt(double v, int digits = 3);
 /// Scientific notation with `digits` significant digits, e.g. 1.23e-14.
 std::string sci(double v, int digits = 3);
+/// Makes `os` write −0.0 as 0 (a num_put facet), for data files written with <<.
+void write_numbers_plainly(std::ostream& os);
 
 struct ResultDoc {
   std::string title;        ///< first heading of the Markdown file
