@@ -1,20 +1,42 @@
 #pragma once
 // Subcommand registration: each cli/<name>.cpp defines a setup function and registers it
-// with `LAC_REGISTER_COMMAND(setup)`; main() adds them all. Invalid input anywhere is an
-// InputError (or a CLI11 parse error): one line on stderr, exit status 2.
+// with `LAC_REGISTER_COMMAND(setup)`; main() adds them all.
+//
+// Exit status of `lac` (lac::cli::run), the same for every subcommand:
+//   0  a usable result was printed (also --help, --version);
+//   2  invalid input: an InputError or a CLI11 parse error (unknown subcommand or option, with
+//      the closest valid name suggested; missing or malformed value): one line on stderr,
+//      `lac <subcommand>: …`, naming the parameter;
+//   3  the command ran and printed its result, but the result is not usable
+//      (lac::usable(status) is false: no_solution, not_converged, max_iterations,
+//      numerical_failure). The rule: a subcommand calls record_status() with the status of
+//      every result it prints — a construction's summary, each point of `eval`/`quadratic`,
+//      each sampled point of `space --points`, a special function's value — and the exit status
+//      is 3 if any of them is not usable. (Points are only sampled from a usable curve, so for
+//      the constructions the summary decides.)
+//   1  an internal error (an unexpected exception): a bug.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "lac/common/status.hpp"
+
 namespace lac::cli {
 
 using CommandSetup = void (*)(CLI::App& app);
 
-/// Runs the command line: 0 on success, 2 on invalid input (one line on stderr naming the
-/// parameter), 1 on an internal error. Used by main() and by the fuzz targets.
+/// Runs the command line and returns the exit status above (0, 1, 2 or 3). Used by main() and
+/// by the fuzz targets.
 int run(int argc, char** argv);
+
+/// Exit statuses of lac::cli::run.
+inline constexpr int kExitOk = 0, kExitInternalError = 1, kExitInvalidInput = 2, kExitNotUsable = 3;
+
+/// Records the status of a result the running subcommand prints; run() exits with 3 if any
+/// recorded status is not usable. Call it once per printed result (see the rule above).
+void record_status(Status status);
 
 std::vector<CommandSetup>& command_registry();
 

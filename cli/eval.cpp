@@ -43,6 +43,7 @@ void run(const EvalArgs& a) {
     results = polyline(curve, p, 0.0, t, a.points, method, form);
   }
   const double seconds = clock.seconds();
+  for (const auto& r : results) record_status(r.status);  // a polyline is usable if every point is
   const Format fmt = parse_format(*a.format);
   if (fmt == Format::json) {
     if (a.points == 1) {

@@ -98,6 +98,7 @@ void print_segment(const TriangleResult& g, const SegmentArgs& a, const Prepared
   const int n = a.points_out > 0 ? a.points_out : (fmt == Format::svg ? 200 : 0);
   const TriangleInfo& info = g.info;
   const Summary& sum = g.summary;
+  record_status(sum.status);
   const bool have_curve = g.usable() && !g.curve.segments().empty();
   const size_t pieces = have_curve ? g.curve.segments().size() : 0;
   auto piece_of_segment = [&](size_t k) { return info.segment0_at_a0 ? k : pieces - 1 - k; };

@@ -34,6 +34,7 @@ void run(const G2Args& a) {
   if (a.points < 0 || a.points == 1) throw_input_error("lac g2", "points", a.points, "0 or [2, inf)");
   const G2Result r = solve_g2(pr, o);
   const Summary& sum = r.summary;
+  record_status(sum.status);
   // Points by the curve's Gauss–Legendre positions; S = s / length, uniform.
   std::vector<PositionResult> pts;
   if (a.points >= 2 && r.usable()) pts = r.curve.sample(a.points);

@@ -47,6 +47,7 @@ void run(const QuadraticArgs& a) {
   if (a.points == 1) pts.push_back(position_at(curve, s1, method));
   else pts = polyline(curve, s0, s1, a.points, method);
   const double seconds = clock.seconds();
+  for (const auto& r : pts) record_status(r.status);  // a polyline is usable if every point is
   const std::string described = describe(method);
 
   if (parse_format(*a.format) == Format::json) {

@@ -1,10 +1,14 @@
 // The `lac` command line as a function: parse, run one subcommand, map errors to exit status.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/command.hpp"
 #include "lac/common/error.hpp"
+#include "lac/version.hpp"
 
 namespace lac::cli {
 
@@ -71,14 +75,137 @@ std::vector<std::vector<double>> parse_points(const std::string& text, size_t ex
   return pts;
 }
 
+namespace {
+
+/// The statuses recorded by the running subcommand (reset by run()).
+std::vector<Status>& recorded_statuses() {
+  static std::vector<Status> statuses;
+  return statuses;
+}
+
+/// Edit distance with adjacent transpositions counted as one edit ("alpah" -> "alpha": 1).
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+std::string strip_dashes(const std::string& s) { return s.substr(std::min(s.find_first_not_of('-'), s.size())); }
+
+/// The candidate closest to `typed`, if it is close enough to be a likely typo: no guess for
+/// names of 1 or 2 characters, at most 1 edit up to 5 characters, else 2. Options are compared
+/// with options of the same kind (--long with --long, -s with -s), without their dashes.
+std::optional<std::string> closest(const std::string& typed, const std::vector<std::string>& candidates) {
+  const std::string t = strip_dashes(typed);
+  const size_t dashes = typed.size() - t.size();
+  const size_t limit = t.size() <= 2 ? 0 : t.size() <= 5 ? 1 : 2;
+  std::optional<std::string> best;
+  size_t best_distance = limit + 1;
+  for (const std::string& c : candidates) {
+    const std::string name = strip_dashes(c);
+    if (c.size() - name.size() != dashes) continue;
+    const size_t dist = edit_distance(t, name);
+    if (dist < best_distance) best = c, best_distance = dist;
+  }
+  return best;
+}
+
+/// `lac`, `lac g1`, `lac special gamma-inc`: the command `app` (a parsed (sub)command) names.
+std::string command_name(const CLI::App* app) {
+  std::string name;
+  for (; app != nullptr; app = app->get_parent())
+    name = app->get_parent() == nullptr ? "lac" + name : " " + app->get_name() + name;
+  return name;
+}
+
+/// The deepest subcommand the command line selected (the app itself if none).
+CLI::App* selected_command(CLI::App& app) {
+  CLI::App* cmd = &app;
+  while (!cmd->get_subcommands().empty()) cmd = cmd->get_subcommands().front();
+  return cmd;
+}
+
+bool is_number(const std::string& s) {
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return !s.empty() && end != s.c_str() && *end == '\0';
+}
+
+/// "unknown option --alpah; did you mean --alpha?" for the first argument CLI11 could not place,
+/// with the (sub)command that was given it; nullopt if every argument was placed.
+std::optional<std::string> unplaced_argument(CLI::App& app) {
+  std::vector<CLI::App*> chain{&app};
+  while (!chain.back()->get_subcommands().empty()) chain.push_back(chain.back()->get_subcommands().front());
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {  // the deepest command first
+    CLI::App* cmd = *it;
+    const std::vector<std::string> left = cmd->remaining();
+    if (left.empty()) continue;
+    const std::string prefix = command_name(cmd) + ": ";
+    std::vector<std::string> children;
+    for (const CLI::App* sub : cmd->get_subcommands([](const CLI::App*) { return true; })) children.push_back(sub->get_name());
+    // A command with subcommands ("special") expects one first: "special gamma-in --a 1".
+    const std::string& first = left.front();
+    if (!children.empty() && !first.empty() && first[0] != '-') {
+      const auto guess = closest(first, children);
+      return prefix + "unknown subcommand \"" + first + "\"" +
+             (guess ? "; did you mean \"" + *guess + "\"?" : " (see " + command_name(cmd) + " --help)");
+    }
+    // Otherwise an option-like argument first: a value after it ("--alpah 1") is only stranded by it.
+    for (const std::string& arg : left) {
+      if (arg.size() < 2 || arg[0] != '-' || is_number(arg)) continue;
+      const std::string name = arg.substr(0, arg.find('='));
+      std::vector<std::string> names;
+      for (const CLI::Option* o : cmd->get_options()) {
+        for (const std::string& l : o->get_lnames()) names.push_back("--" + l);
+        for (const std::string& s : o->get_snames()) names.push_back("-" + s);
+      }
+      const auto guess = closest(name, names);
+      return prefix + "unknown option " + name + (guess ? "; did you mean " + *guess + "?" : " (see " + command_name(cmd) + " --help)");
+    }
+    return prefix + "unexpected argument \"" + first + "\" (see " + command_name(cmd) + " --help)";
+  }
+  return std::nullopt;
+}
+
+/// One line: newlines of a multi-line message become spaces.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  return text;
+}
+
+/// An InputError's message without the "lac …: " its CLI thrower put in front (run() adds the
+/// command's own); a library function's name ("LaCurve: …") stays.
+std::string without_lac_prefix(const std::string& message) {
+  if (message.rfind("lac", 0) == 0 && message.size() > 3 && (message[3] == ':' || message[3] == ' ')) {
+    const size_t colon = message.find(": ");
+    if (colon != std::string::npos) return message.substr(colon + 2);
+  }
+  return message;
+}
+
+}  // namespace
+
+void record_status(Status status) { recorded_statuses().push_back(status); }
+
 }  // namespace lac::cli
 
 int lac::cli::run(int argc, char** argv) {
   struct FreeOptionStorage {  // declared before the app: runs after the app is destroyed
     ~FreeOptionStorage() { lac::cli::option_storage().clear(); }
   } free_storage;
+  recorded_statuses().clear();
   CLI::App app{"lac — log-aesthetic curves: evaluate curves, build segments, reproduce published tables.\n"
-               "Run `lac <command> --help` for each command's options."};
+               "Run `lac <command> --help` for each command's options.\n"
+               "Exit status: 0 usable result, 2 invalid input, 3 no usable result (see the printed status)."};
+  app.set_version_flag("--version", std::string("lac ") + lac::version);
   app.require_subcommand(1);
   app.fallthrough(false);
   for (auto setup : lac::cli::command_registry()) setup(app);
@@ -88,17 +215,25 @@ int lac::cli::run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return kExitOk;
   } catch (const CLI::ParseError& e) {
-    std::string what = e.what();
-    for (char& c : what) if (c == '\n') c = ' ';
-    std::cerr << "lac: error: " << what << " (see --help)\n";
-    return 2;
+    if (const auto unplaced = unplaced_argument(app)) {
+      std::cerr << one_line(*unplaced) << "\n";
+      return kExitInvalidInput;
+    }
+    const std::string name = command_name(selected_command(app));
+    std::cerr << name << ": " << one_line(e.what()) << " (see " << name << " --help)\n";
+    return kExitInvalidInput;
   } catch (const lac::InputError& e) {
-    std::cerr << "lac: error: " << e.what() << "\n";
-    return 2;
+    std::cerr << command_name(selected_command(app)) << ": " << one_line(without_lac_prefix(e.what())) << "\n";
+    return kExitInvalidInput;
   } catch (const std::exception& e) {
-    std::cerr << "lac: internal error: " << e.what() << "\n";
-    return 1;
+    std::cerr << command_name(selected_command(app)) << ": internal error: " << one_line(e.what()) << "\n";
+    return kExitInternalError;
   }
-  return 0;
+  for (Status s : recorded_statuses())
+    if (!lac::usable(s)) return kExitNotUsable;
+  return kExitOk;
 }

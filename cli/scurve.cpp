@@ -34,6 +34,7 @@ void run(const SCurveArgs& a) {
     throw_input_error("lac scurve", "points-out", a.points_out, "0 or [2, inf)");
   const SCurveResult r = solve_s_curve(P, a.alpha, o);
   const Summary& sum = r.summary;
+  record_status(sum.status);
   // Points by the curve's Gauss–Legendre positions; t = s / length from P0, uniform.
   std::vector<PositionResult> pts;
   if (a.points_out >= 2 && r.usable()) pts = r.curve.sample(a.points_out);

@@ -53,6 +53,8 @@ void run(const SpaceArgs& a) {
   const bool drawn = !curve.pieces().empty();
   std::vector<SpacePoint> pts;
   if (a.points >= 2 && drawn) pts = curve.sample(a.points);
+  record_status(sum.status);
+  for (const SpacePoint& p : pts) record_status(p.status);
   const double scale = drawn ? curve.placement().scale : 0.0;
   const double tangent_error = sum.residuals.angle.value_or(std::numeric_limits<double>::infinity());
   auto optional_json = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };

@@ -24,6 +24,7 @@ double parse_y(const std::string& text) {
 }
 
 void print(const InverseArgs& a, const char* function, double y, const special::InverseResult& r) {
+  record_status(r.status);
   if (parse_format(*a.format) == Format::json) {
     const nlohmann::json j = {{"function", function}, {"y", y},
                               {"value", r.value},     {"iterations", r.iterations},

@@ -20,6 +20,7 @@ void run(const GammaIncArgs& args) {
   const std::vector<double> zz = parse_tuple(args.z, 2, "z");
   const std::complex<double> z(zz[0], zz[1]);
   const special::GammaIncResult r = args.scaled ? special::gamma_inc_scaled(args.a, z) : special::gamma_inc(args.a, z);
+  record_status(r.status);
   const Format fmt = parse_format(*args.format);
   if (fmt == Format::json) {
     const nlohmann::json j = {{"re", r.value.real()},

@@ -1,8 +1,9 @@
 // libFuzzer target: `lac` argument parsing and execution for every registered subcommand.
 // Input layout: byte 0 picks a command path among the registered ones in sorted order (e.g.
 // "eval", "special erfi-inv"; 0xff: none, the arguments name it); the rest is split on NUL and newline into arguments (spaces stay inside
-// an argument, as in --points "x0,y0 x1,y1 x2,y2"). lac::cli::run must return 0 or 2;
-// 1 (internal error), any other value or an escaping exception is a finding.
+// an argument, as in --points "x0,y0 x1,y1 x2,y2"). lac::cli::run must return 0, 2 (invalid
+// input) or 3 (no usable result); 1 (internal error), any other value or an escaping exception
+// is a finding.
 #include <algorithm>
 #include <iostream>
 #include <sstream>
@@ -89,12 +90,15 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
   }
   std::cerr.rdbuf(old_cerr);
   if (rc == 1) lac::fuzz::finding("INTERNAL_ERROR", command_line + "-> exit 1: " + errors.str());
-  if (rc != 0 && rc != 2) lac::fuzz::finding("EXIT_STATUS", command_line + "-> exit " + std::to_string(rc));
+  if (rc != 0 && rc != 2 && rc != 3) lac::fuzz::finding("EXIT_STATUS", command_line + "-> exit " + std::to_string(rc));
   if (rc == 2) {
     // Invalid input: exactly one line on stderr.
     const std::string e = errors.str();
     if (e.empty() || e.find('\n') != e.size() - 1)
       lac::fuzz::finding("ERROR_LINE", command_line + "-> exit 2 with stderr '" + e + "' (want one line)");
+    // Named once: `lac: …` or `lac <subcommand>: …`, never "lac: error: lac: …".
+    if (e.rfind("lac", 0) != 0 || e.find(": lac: ") != std::string::npos || e.find("error: lac") != std::string::npos)
+      lac::fuzz::finding("ERROR_LINE", command_line + "-> exit 2 with stderr '" + e + "' (want one `lac …:` prefix)");
   }
   return 0;
 }

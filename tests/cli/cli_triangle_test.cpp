@@ -18,9 +18,9 @@ namespace {
 const std::string kG1 = "g1 --points '0,0 1,0 2,1' --alpha -1";
 const std::string kCompound = "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3";  // swapped, mirrored
 
-nlohmann::json run_json(const std::string& args) {
+nlohmann::json run_json(const std::string& args, int exit_status = 0) {
   const test::CliRun run = test::run_lac(args);
-  EXPECT_EQ(run.status, 0) << args << "\n" << run.out;
+  EXPECT_EQ(run.status, exit_status) << args << "\n" << run.out;
   try {
     return nlohmann::json::parse(run.out);
   } catch (const nlohmann::json::exception& e) {
@@ -111,8 +111,8 @@ TEST(CliTriangle, CsvAndSvg) {
 }
 
 TEST(CliTriangle, StatusesAndBadInput) {
-  // Proven outside the drawable region: a status with its reason, exit 0.
-  const nlohmann::json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5");
+  // Proven outside the drawable region: a status with its reason, exit 3 (no usable curve).
+  const nlohmann::json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
   EXPECT_EQ(none["status"], "no_solution");
   EXPECT_NE(none["message"].get<std::string>().find("drawable region"), std::string::npos) << none.dump();
   EXPECT_EQ(none["length"], 0.0);
