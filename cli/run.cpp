@@ -174,11 +174,24 @@ std::optional<std::string> unplaced_argument(CLI::App& app) {
   return std::nullopt;
 }
 
-/// One line: newlines of a multi-line message become spaces.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n') c = ' ';
-  return text;
+/// One printable line: newlines of a multi-line message become spaces, other control characters
+/// (which an echoed argument may hold) are written as \xNN.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += ' ';
+    } else if (u < 0x20 || u == 0x7f) {
+      const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 /// An InputError's message without the "lac …: " its CLI thrower put in front (run() adds the

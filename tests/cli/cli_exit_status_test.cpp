@@ -114,6 +114,9 @@ TEST(CliExitStatus, UnknownNamesAreNamedWithTheClosestValidOne) {
   };
   const Case cases[] = {
       {"evl", "lac: unknown subcommand \"evl\"; did you mean \"eval\"?"},
+      // An echoed argument's control characters are written as \xNN, its newlines as spaces: one line.
+      {"\"$(printf 'ev\\001al')\"", "lac: unknown subcommand \"ev\\x01al\"; did you mean \"eval\"?"},
+      {"eval \"$(printf '%s\\n%s' --alp ha)\" 1", "lac eval: unknown option --alp ha; did you mean --alpha?"},
       {"scruve --alpha -1", "lac: unknown subcommand \"scruve\"; did you mean \"scurve\"?"},
       {"xyzzy", "lac: unknown subcommand \"xyzzy\" (see lac --help)"},
       {"special gamma-in --a 1 --z 1,0", "lac special: unknown subcommand \"gamma-in\"; did you mean \"gamma-inc\"?"},
