@@ -295,7 +295,7 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
 
 int main(int argc, char** argv) {
   CLI::App app{"Accuracy and speed of erfi^-1 / erf^-1 and of kappa(s) on quadratic LA curves (003)"};
-  std::string out = "results", ref = "tests/reference";
+  std::string out = "results", ref = LAC_SOURCE_DIR "/tests/reference";  // any working directory
   Settings st;
   int points = 1000;
   app.add_option("--out", out, "Output folder")->capture_default_str();
