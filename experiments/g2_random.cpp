@@ -151,9 +151,8 @@ int main(int argc, char** argv) {
       "minimizing J_LAC over the 10^4-point leg grid). `fast + grid fallback` is the library default: a failure "
       "from the fast start is re-solved from the grid start (its time includes both attempts). A problem counts as "
       "solved when the status is usable and the verified residuals (end point by Boost tanh-sinh, independent of "
-      "the solvers' Gauss–Legendre rule) are ≤ 1e-10 relative to the chord. Times are wall-clock per call, "
-      "single-threaded, including the initial estimate and the residual check, on a shared 2-core machine under "
-      "load by other jobs: treat them as upper bounds with large spread; bench/hermite.cpp has the benchmark.";
+      "the solvers' Gauss–Legendre rule) are ≤ 1e-10 relative to the chord. Wall times per call: "
+      "g2_random_timing.md.";
   doc.notes =
       "004 reports (Core i7 3.4 GHz, 8 GB, C++ plug-in of a commercial CAD system): about " + io::fmt(kPaperG2TotalMs) +
       " ms per G2 curve, of which about " + io::fmt(kPaperG2StartMs) +
@@ -165,7 +164,11 @@ int main(int argc, char** argv) {
       "solvers' not_converged means no descent from the last iterate (a local minimum of the residual). The "
       "failing problems we inspected all have steep end tangents (|θ| > 0.9 rad), where a solution, if any, is "
       "long and nearly loops.";
-  io::write_result_table(out, "g2_random", doc, t);
+  io::write_result_table_with_timing(
+      out, "g2_random", doc, t, {"α", "solver", "start"}, {"median ms", "p90 ms", "median start ms"},
+      "Times are wall-clock per call, single-threaded, including the initial estimate and the residual check, on a "
+      "shared 2-core machine under load by other jobs: treat them as upper bounds with large spread; "
+      "bench/hermite.cpp has the benchmark.");
 
   // S-curve inputs: P0 = (0,0), P3 = (1,0), tangent legs of length 1/3 at angles uniform in (−π/2, π/2).
   io::Table ts;
@@ -225,13 +228,14 @@ int main(int argc, char** argv) {
       std::to_string(seed + 1) +
       "). The Fig. 2 decision classifies each input as S- or "
       "C-shaped; both are solved by a search on Λ (`bisection` as in 004, or Boost TOMS 748). Solved: status ok and "
-      "end point / end tangents within 1e-10 (end point by tanh-sinh). Times (S-shaped inputs only) are per call; "
-      "wall times vary between runs.";
+      "end point / end tangents within 1e-10 (end point by tanh-sinh). Wall times per call: "
+      "scurve_random_timing.md.";
   ds.notes = "004 reports " + io::fmt(kPaperScurveMs[0]) + "–" + io::fmt(kPaperScurveMs[1]) +
              " ms for the parameter search of an S-curve (Core i7 3.4 GHz; 004 §2.5). The C-shaped inputs are solved "
              "by one α < 0 segment whose curvature decreases from the tighter end to at most the inflection; when the "
              "chord lies too close to one tangent no such segment exists (status no_solution): this is the bounded "
              "region of G1 LA segments with α < 0, not a solver failure. The S-shaped inputs are the paper's case.";
-  io::write_result_table(out, "scurve_random", ds, ts);
+  io::write_result_table_with_timing(out, "scurve_random", ds, ts, {"α", "root"}, {"median µs (S)", "p90 µs (S)"},
+                                     "Times (S-shaped inputs only) are wall time per call.");
   return 0;
 }

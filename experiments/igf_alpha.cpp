@@ -142,15 +142,19 @@ int main(int argc, char** argv) {
       "`segment_series` (|a| > 10, i.e. 10/11 < α < 10/9, or where subtraction would cancel), `gauss_kronrod` "
       "(fallback, counted in `fell back`). Gauss–Kronrod (G10K21, tol 1e-14) on ρ(ψ)e^{iψ} over the same "
       "intervals is shown beside it." +
-      std::string(timing ? " Times are medians over the cases of the median of 5 batches (io::time_calls); absolute "
-                           "times vary between runs, so compare ratios only."
-                         : "");
+      std::string(timing ? " Times (--timing): igf_alpha_timing.md." : "");
   doc.notes = "Worst igf error over all cases: " + lac::io::sci(overall, 2) + "; fell back: " +
               std::to_string(total_fell_back) + "; not usable: " + std::to_string(total_not_ok) +
               ". 002 states that its incomplete-gamma closed form can be used for certain α only (its abstract and "
               "results section), and its Appendix B shows a 0.51 disagreement between Gauss–Kronrod and its closed-form values at "
               "α = 10/9, Λ = 100. Here every α on the whole domain, including a ≤ 0 (0 ≤ α < 1) and |a| > 10 near "
               "α = 1, is served by a form of the closed form.";
-  lac::io::write_result_table(out, "igf_alpha", doc, t);
+  if (timing)
+    lac::io::write_result_table_with_timing(
+        out, "igf_alpha", doc, t, {"alpha", "Lambda"}, {"igf median µs", "gk median µs"},
+        "Times are medians over the cases of the median of 5 batches (io::time_calls); absolute times vary between "
+        "runs, so compare ratios only.");
+  else
+    lac::io::write_result_table(out, "igf_alpha", doc, t);
   std::cerr << "wrote " << out << "/igf_alpha.md\n";
 }

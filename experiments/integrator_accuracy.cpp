@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
       "`tests/reference/la_reference.csv` (" + std::to_string(cases.size()) +
       " cases: α from −100 to 100 incl. 0 and 1, Λ from 1e-3 to 100, θ up to 0.95 of its bound "
       "(|θ| ≤ 30), negative and small θ; mpmath at 40 digits, cross-checked against the incomplete-gamma "
-      "closed form). Error is |C − C_ref| / |C_ref|. Time is one call per case (wall clock, varying "
-      "between runs), so only the median and p90 over cases are meaningful. `not ok` counts results whose "
+      "closed form). Error is |C − C_ref| / |C_ref|; times per call: integrator_accuracy_timing.md. "
+      "`not ok` counts results whose "
       "status is not ok (or inputs the method rejects, e.g. an RK4 step count above its cap). Form: "
       "`theta` integrates ρ(ψ)e^{iψ} over θ, `s` integrates e^{iθ(u)} over s, `auto` picks per interval "
       "(curves/planar/la_position.hpp).";
@@ -133,6 +133,9 @@ int main(int argc, char** argv) {
       "RK4 at a fixed step is not meant to reach these tolerances: near an open end of the θ domain ρ "
       "varies over many orders of magnitude within one step. The rows with form `theta` and `s` show why "
       "`auto` chooses as it does.";
-  lac::io::write_result_table(out, "integrator_accuracy", doc, t);
+  lac::io::write_result_table_with_timing(
+      out, "integrator_accuracy", doc, t, {"integrator", "settings", "form"}, {"median µs/call", "p90 µs/call"},
+      "Time is one call per case (wall clock, varying between runs), so only the median and p90 over cases are "
+      "meaningful.");
   std::cerr << "wrote " << out << "/integrator_accuracy.md\n";
 }

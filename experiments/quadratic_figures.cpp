@@ -149,12 +149,14 @@ int main(int argc, char** argv) {
       "`max |LCG - parabola|`: the logarithmic curvature graph recomputed from the produced points alone (curvature of "
       "the circle through consecutive points, central differences of log ρ) against γ(log ρ)² + α log ρ − log Λ, over "
       "the `LCG points` where |log κ(k+1) − log κ(k−1)| ≤ 0.05 and the tangent turns ≤ 0.05 rad per step. It is a "
-      "finite-difference check (error O(Δ log κ²)), not an accuracy figure. The plots are `figures/quadratic_fig*.png`.";
+      "finite-difference check (error O(Δ log κ²)), not an accuracy figure. The plots are `figures/quadratic_fig*.png`; "
+      "wall times: quadratic_figures_timing.md.";
   doc.notes =
       "γ values of Figs. 3–5 follow Fig. 5's captions (−0.5, 0, 1), which 003 gives only there; Fig. 7's list is ours. "
       "Fig. 9 is drawn for both γ = −30 (caption) and γ = 30 (text): only γ > 0 has the infinite arc length the text "
       "describes. Worst LCG deviation over all curves: " + sci(worst_lcg, 2) + ".";
-  lac::io::write_result_table(out, "quadratic_figures", doc, table);
+  lac::io::write_result_table_with_timing(out, "quadratic_figures", doc, table, {"figure", "alpha", "gamma", "Lambda"},
+                                          {"ms"}, "ms: wall time of the polyline of one curve (io::Stopwatch), single call.");
   std::cout << "quadratic_figures: worst LCG deviation " << worst_lcg << "\n";
   return 0;
 }

@@ -126,13 +126,16 @@ void inverse_table(const std::string& ref_dir, const std::string& out, const Set
       "double range (|y| from 5e-324 to 1.8e308, both signs), erf⁻¹ near 0 and next to ±1 (1 − 2⁻ᵏ, k ≤ 53). "
       "`failures`: inputs the method cannot answer (003's bisection bounds |x| ≤ 26 for erfi, ≤ 5 for erf, i.e. "
       "|y| > erfi(26) ≈ 8.3e291 or |y| > erf(5) = 1 − 1.5e-12); the error column covers the other cases. Iterations: "
-      "Halley/Newton steps or bisection halvings (each one function evaluation). Time per call cycles through the same "
-      "inputs (absolute times vary between runs: compare ratios).";
+      "Halley/Newton steps or bisection halvings (each one function evaluation). Times per call: "
+      "quadratic_inverse_timing.md.";
   doc.notes =
       "003 gives no Newton/bisection switch point; ours uses Newton from 0 for |x| ≤ 0.75 and bisection elsewhere. Its "
       "bisection on erf compares erf(mid) with y, which resolves x only to eps/erf'(x) next to ±1; erfc-based "
       "inversion (Boost) does not have that limit.";
-  lac::io::write_result_table(out, "quadratic_inverse", doc, t);
+  lac::io::write_result_table_with_timing(
+      out, "quadratic_inverse", doc, t, {"function", "method"}, {"ns/call median", "p10", "p90"},
+      "io::time_calls, cycling through the same inputs: median and p10/p90 of ns per call over batches (absolute "
+      "times vary between runs: compare ratios).");
 }
 
 // ---- B: κ(s) against the reference ----------------------------------------------------------
@@ -210,8 +213,11 @@ void kappa_table(const std::string& ref_dir, const std::string& out, const Setti
       "not ok (overflow of e^(α²/(4γ)), argument beyond 003's |z| ≤ 26 / ≤ 5) or an error above 1e-6. "
       "003's path: docs/math.md §4's corrected Eq. (4.6) evaluated as printed (unscaled) with the hybrid inverses, no "
       "polishing. Ours: erfi⁻¹ / erfc⁻¹ in log form on Dawson/erfcx-scaled targets, then safeguarded Halley on s(u).";
-  doc.notes = "Times include the curve's domain check; the cases cycle through all parameter sets of the row.";
-  lac::io::write_result_table(out, "quadratic_kappa", doc, t);
+  doc.notes = "Times per call: quadratic_kappa_timing.md.";
+  lac::io::write_result_table_with_timing(
+      out, "quadratic_kappa", doc, t, {"parameter sets", "inverse"}, {"ns/call median", "p10", "p90"},
+      "io::time_calls: median and p10/p90 of ns per call over batches. Times include the curve's domain check; the "
+      "cases cycle through all parameter sets of the row.");
 }
 
 // ---- C: timing of κ(s), s(κ), θ(s) and 1000-point curves ---------------------------------------
@@ -289,7 +295,7 @@ void timing_table(const std::string& out, const Settings& st, int points, const 
 
 int main(int argc, char** argv) {
   CLI::App app{"Accuracy and speed of erfi^-1 / erf^-1 and of kappa(s) on quadratic LA curves (003)"};
-  std::string out = "results", ref = "tests/reference";
+  std::string out = "results", ref = LAC_SOURCE_DIR "/tests/reference";  // any working directory
   Settings st;
   int points = 1000;
   app.add_option("--out", out, "Output folder")->capture_default_str();

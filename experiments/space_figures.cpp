@@ -140,13 +140,15 @@ int main(int argc, char** argv) {
       "list (experiments/space_figures.cpp) that meets both cones; the solver (000's modified downhill simplex, "
       "from its default start) is not told that (Λ0, ν0), so it may find another solution. Λ1, Ω1, ν1, s_c come "
       "from the LCG/LTG continuity at the joint (000 Eqs. 11, 16–18; docs/math.md §3). Length in user units "
-      "(|P1 − P0| = 1). Plots: results/figures/space_figures_type1.png, space_figures_type2.png.";
+      "(|P1 − P0| = 1). Plots: results/figures/space_figures_type1.png, space_figures_type2.png. Wall times: "
+      "space_figures_timing.md.";
   doc.notes =
       "The paper shows these curves only as pictures (with shadows) and their curvature/torsion plots, without "
       "numbers, so there is nothing numeric to compare; our plots show the same kind of κ, τ profiles along s: "
       "κ monotone (ρ increasing), τ decreasing for type 1 (μ increasing) and increasing for type 2, with the "
       "slope change at the joint.";
-  lac::io::write_result_table(out, "space_figures", doc, t);
+  lac::io::write_result_table_with_timing(out, "space_figures", doc, t, {"figure"}, {"ms"},
+                                          "ms: wall time of the solve of one set (Summary::seconds), single call.");
   std::cout << t.markdown() << "\n";
 
   // 000 Fig. 7: r_θ moves the joint. Same endpoints as set 5a.

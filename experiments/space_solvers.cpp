@@ -23,14 +23,6 @@ double quantile(std::vector<double> v, double q) {
   return v[static_cast<size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
 }
 
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
-}
-
 // CPU time of this thread: less sensitive than wall time to other processes.
 double thread_cpu_seconds() {
   timespec ts{};
@@ -122,21 +114,23 @@ int main(int argc, char** argv) {
       "(Λ0, ν0) ∈ [0.2, 3] × [0.5, 4] and cone angle θ ∈ [0.3, 1.2] rad, α, β ∈ [−1, 2], Ω0 ∈ [0.05, 0.6], "
       "r_θ ∈ [0.3, 0.7], type 1 or 2, then a random rotation, translation and scale; the solver is not told "
       "(Λ0, ν0)). Success: end-tangent error ≤ 1e-11 rad (the position constraints hold by construction). "
-      "Time is wall clock per segment including failures (single calls, `io::Stopwatch`), on " + cpu_model() +
-      "; wall times vary between runs (p10–p90 shown); "
-      "the thread CPU time (clock_gettime CLOCK_THREAD_CPUTIME_ID) varies less. "
+      "Times per segment and the comparison with 000's: space_solvers_timing.md. "
       "A construction is one integration of the Frenet–Serret equations to the cone(s) for a trial (Λ0, ν0). "
       "simplex is 000's modified downhill simplex on the end-tangent angle; ceres is Ceres Levenberg–Marquardt and "
       "newton a damped Newton iteration, both on the stereographic end-tangent residual; magnus6 is the order-6 "
       "Magnus integrator (rtol 1e-10), rk45 Dormand–Prince (rtol 1e-12).";
   doc.notes =
-      "000 (§5) reports about 10 ms per compound segment on a Core 2 Duo 3.0 GHz with its downhill simplex; it "
-      "gives no success rate, tolerance or configuration set, so the ratio compares different machines (ours is "
-      "newer and faster per core) and possibly different tolerances: it is context, not a like-for-like speedup. "
       "Failures (if any) are configurations where every solver run from the start and from the screened grid "
       "stopped short of the tolerance: status not_converged (or the closest run's max_iterations), since that "
       "search is not complete and a curve may still exist; see docs/space_curves.md.";
-  lac::io::write_result_table(out, "space_solvers", doc, t);
+  lac::io::write_result_table_with_timing(
+      out, "space_solvers", doc, t, {"segment", "solver", "integrator"},
+      {"median ms", "p10 ms", "p90 ms", "median CPU ms", "000 (ms)", "000 / ours (median CPU)"},
+      "Time is wall clock per segment including failures (single calls, `io::Stopwatch`); wall times vary between "
+      "runs (p10–p90 shown); the thread CPU time (clock_gettime CLOCK_THREAD_CPUTIME_ID) varies less. "
+      "000 (§5) reports about 10 ms per compound segment on a Core 2 Duo 3.0 GHz with its downhill simplex; it "
+      "gives no success rate, tolerance or configuration set, so the ratio compares different machines (ours is "
+      "newer and faster per core) and possibly different tolerances: it is context, not a like-for-like speedup.");
   std::cout << t.markdown();
   return 0;
 }

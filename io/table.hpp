@@ -36,6 +36,25 @@ struct ResultDoc {
 /// (a `# written by:` comment line, then the header and rows). Creates dir.
 void write_result_table(const std::filesystem::path& dir, const std::string& stem, const ResultDoc& doc, const Table& t);
 
+/// Whether a result file stem names a timing table, whose numbers are wall/CPU times and change on
+/// every run: the stem ends in `_timing`, contains `_bench`, or starts with `p002_appendix_a` (the
+/// p002 timing experiment). Every other table must regenerate byte-identically
+/// (scripts/check_reproducible.sh); scripts/index_results.py states the same rule.
+bool is_timing_table(const std::string& stem);
+
+/// One sentence naming the machine a timing was taken on: CPU model (/proc/cpuinfo "model name"),
+/// compiler and version, build type and flags of this build. write_result_table appends it to the
+/// description of every timing table.
+std::string machine_description();
+
+/// Writes `t` as two tables: <stem> with every column except `timing_columns`, and <stem>_timing
+/// with `key_columns` (which must identify each row) followed by `timing_columns`. The accuracy
+/// table takes `doc`; the timing table takes the same title and command with `timing_description`.
+void write_result_table_with_timing(const std::filesystem::path& dir, const std::string& stem, const ResultDoc& doc,
+                                    const Table& t, const std::vector<std::string>& key_columns,
+                                    const std::vector<std::string>& timing_columns,
+                                    const std::string& timing_description);
+
 /// The command line of this process, for provenance lines.
 std::string command_line(int argc, char** argv);
 

@@ -6,7 +6,12 @@ import sys
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "results")
 lines = ["# Results", "",
          "Written by `scripts/index_results.py` (run by `scripts/regenerate.sh`); every file here",
-         "is written by a program named in its first lines. Do not edit by hand.", "", "## Tables", ""]
+         "is written by a program named in its first lines. Do not edit by hand.", "",
+         "Timing files: a file whose name without extension ends in `_timing`, contains `_bench`, or",
+         "starts with `p002_appendix_a` holds wall/CPU times (its description names the CPU, compiler",
+         "and build flags) and changes on every run. Every other file must regenerate byte-identically;",
+         "`scripts/check_reproducible.sh` (ctest label `reproducible`) checks a subset.", "",
+         "## Tables", ""]
 for md in sorted(root.glob("*.md")):
     if md.name == "README.md":
         continue
