@@ -2,8 +2,10 @@
 // What every construction returns: the curve, a Summary of how it was obtained (in the spirit of
 // Ceres' Solver::Summary) and the construction's own details. One type for all constructions, so
 // that callers, the command line and the experiments read every result the same way.
+#include <chrono>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "lac/common/status.hpp"
 
@@ -44,6 +46,23 @@ struct Result {
   Info info{};
 
   bool usable() const { return summary.usable(); }
+
+  /// Sets the final status and message. A result that is not usable keeps no curve, residuals or
+  /// error estimate: nothing of a failed solve reaches the caller as a curve.
+  void conclude(Status status, std::string message) {
+    summary.status = status;
+    summary.message = std::move(message);
+    if (!summary.usable()) {
+      curve = Curve{};
+      summary.residuals = {};
+      summary.error_estimate.reset();
+    }
+  }
 };
+
+/// Wall time since `start` in seconds, for Summary::seconds.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 }  // namespace lac

@@ -34,10 +34,6 @@ std::vector<SolverMethodInfo<G2Solver>> make_g2_solvers() {
   return rows;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // 004's coefficients of each segment (Eqs. 2, 3, 5–8) from its linear-q data in S.
 std::array<SegmentCoefficients, 3> coefficients(const LaLaw& law, const std::array<detail::LinearQ, 3>& segments) {
   std::array<SegmentCoefficients, 3> c;
@@ -145,13 +141,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   sum.integrator = std::string(name_of(o.integrator));
   sum.solver = std::string(to_string(o.solver));
   auto finish = [&](Status status, std::string message) {
-    sum.status = status;
-    sum.message = std::move(message);
-    if (!usable(status)) {  // nothing of a failed solve reaches the caller as a curve
-      res.curve = PlanarCurve{};
-      sum.residuals = {};
-      sum.error_estimate.reset();
-    }
+    res.conclude(status, std::move(message));
     sum.seconds = seconds_since(t_begin);
     return res;
   };

@@ -88,15 +88,9 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   const LaLaw law{alpha, 1.0};
   detail::TrialIntegrator integrate(o.integrator, o.max_evaluations);
   auto finish = [&](Status st, std::string msg) {
-    sum.status = st;
-    sum.message = std::move(msg);
-    if (!usable(st)) {  // nothing of a failed solve reaches the caller as a curve
-      res.curve = PlanarCurve{};
-      sum.residuals = {};
-      sum.error_estimate.reset();
-      info.inflection_s.reset();
-    }
-    sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_begin).count();
+    res.conclude(st, std::move(msg));
+    if (!res.usable()) info.inflection_s.reset();
+    sum.seconds = seconds_since(t_begin);
     return res;
   };
   // A failure after trial Λ stopped being integrated is the evaluation budget's.

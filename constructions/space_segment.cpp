@@ -247,10 +247,6 @@ bool in_box(const Vec2& x) {
 
 using SpaceResult = Result<SpaceCurve, SpaceInfo>;
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // The result of one construction: its curve (when defined), end-tangent and end-point errors and
 // status; the counters are the caller's.
 SpaceResult to_result(const Problem& pb, const Trial& t) {

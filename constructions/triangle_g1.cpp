@@ -529,7 +529,7 @@ template <class Run>
 TriangleResult timed(const TriangleOptions& o, Run run) {
   const auto start = std::chrono::steady_clock::now();
   TriangleResult g = std::visit(run, o.integrator);
-  g.summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  g.summary.seconds = seconds_since(start);
   return g;
 }
 
