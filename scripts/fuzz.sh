@@ -206,9 +206,11 @@ done
 
 # --report-only: LAC_FUZZ_COMMAND may name the invocations that produced the summary rows.
 COMMAND=${LAC_FUZZ_COMMAND:-$COMMAND}
-python3 - "$summary" "$OUT" "$COMMAND" <<'PY'
+python3 - "$summary" "$OUT" "$COMMAND" "$(clang++ --version 2>/dev/null | head -1 || echo clang++)" <<'PY'
 import csv, os, re, sys
-summary, out, command = sys.argv[1:]
+summary, out, command, compiler = sys.argv[1:]
+cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "unknown CPU")
+machine = f"{cpu}, {os.cpu_count()} logical CPUs; {compiler}, Release (-O3 -DNDEBUG) with -fsanitize=fuzzer-no-link,address,undefined (scripts/fuzz.sh)"
 rows = [l.rstrip("\n").split("\t") for l in open(summary) if l.strip()]
 os.makedirs(out, exist_ok=True)
 cols = ["target", "runs_asked", "max_seconds", "executions", "seconds", "crashes", "hangs", "nan_results", "notes"]
@@ -220,6 +222,7 @@ with open(os.path.join(out, "robustness.csv"), "w", newline="") as f:
 with open(os.path.join(out, "robustness.md"), "w") as f:
     f.write("# Robustness: libFuzzer targets\n\n")
     f.write(f"Written by `{command}` — do not edit by hand; rerun the command.\n\n")
+    f.write(f"Machine: {machine}. Executions and seconds are this machine's; they vary from run to run.\n\n")
     f.write(f"Each target ran under AddressSanitizer + UndefinedBehaviorSanitizer (clang 14, libFuzzer edge coverage, fork mode unless --short) for "
             "-runs=`runs_asked` executions or at most `max_seconds` s, whichever came first; `executions` is what it reached. "
             "crashes = distinct sanitizer reports, unexpected exception types, errors without a parameter name, "

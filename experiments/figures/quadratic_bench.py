@@ -35,6 +35,18 @@ def show(seconds):
             return "%.3g %s" % (seconds / scale, unit)
 
 
+def machine_line(path):
+    """The machine as the benchmark JSON records it (Google Benchmark's context names no CPU model
+    or compiler: those are the ones scripts/setup.sh and scripts/build.sh give)."""
+    with open(path) as f:
+        c = json.load(f)["context"]
+    caches = ", ".join("L%d%s %d KiB" % (x["level"], "d" if x["type"] == "Data" else ("i" if x["type"] == "Instruction" else ""),
+                                         x["size"] // 1024) for x in c.get("caches", []))
+    return ("Machine (from the JSON context): %s CPUs at %s MHz, caches %s. Build: Release (-O3 -DNDEBUG, as "
+            "scripts/build.sh configures it) with the C++ compiler scripts/setup.sh installs (Debian's g++); the JSON "
+            "does not record the CPU model." % (c.get("num_cpus", "?"), c.get("mhz_per_cpu", "?"), caches))
+
+
 def main():
     results = sys.argv[1] if len(sys.argv) > 1 else "results"
     before_path = os.path.join(results, "quadratic_bench_before.json")
@@ -42,6 +54,7 @@ def main():
     if not (os.path.exists(before_path) and os.path.exists(after_path)):
         print("quadratic_bench.py: no benchmark JSON in %s, nothing to do" % results)
         return
+    machine = machine_line(after_path)
     before, date_before = medians(before_path)
     after, date_after = medians(after_path)
     lines = [
@@ -51,6 +64,8 @@ def main():
         "`quadratic_bench_after.json` (%s), each from `build/bench_quadratic --benchmark_repetitions=3 "
         "--benchmark_report_aggregates_only=true --benchmark_out=FILE --benchmark_out_format=json` "
         "(CPU time: it varies less between runs than the wall time)." % (date_before, date_after),
+        "",
+        machine,
         "",
         "| benchmark | what | CPU before | CPU after | after/before | target | met |",
         "|---|---|---|---|---|---|---|",
