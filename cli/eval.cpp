@@ -49,9 +49,7 @@ Report solve(const EvalArgs& a) {
   Report r{evaluation_report(at.status, at.status == Status::ok ? "" : at.message, evaluations, seconds, describe(method)), {}};
   Json& j = r.json;
   const double s_end = at.point.s;
-  j["length"] = number(std::abs(s_end));
-  j["kappa0"] = 1.0;
-  j["kappa1"] = number(at.point.kappa);
+  set_extent(j, std::abs(s_end), 1.0, at.point.kappa);
   j["segments"] = standard_arc(curve, s_end);
   j["point"] = planar_point(at);
   j["info"] = {{"form", std::string(to_string(at.form))},

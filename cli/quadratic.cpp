@@ -51,9 +51,7 @@ Report solve(const QuadraticArgs& a) {
            {}};
   Json& j = r.json;
   const double kappa1 = curve.frame_at(s1).kappa;
-  j["length"] = number(s1 - s0);
-  j["kappa0"] = number(start.point.kappa);
-  j["kappa1"] = number(kappa1);
+  set_extent(j, s1 - s0, start.point.kappa, kappa1);
   const Json start_point = planar_point(start);
   j["segments"] = Json::array({Json{{"kind", "quadratic-la"},
                                     {"alpha", curve.alpha()},

@@ -45,6 +45,9 @@ Json construction_report(const Summary& summary);
 Json evaluation_report(Status status, const std::string& message, long evaluations, double seconds,
                        const std::string& integrator);
 
+/// Sets length, kappa0 and kappa1 (null where not finite).
+void set_extent(Json& report, double length, double kappa0, double kappa1);
+
 /// A planar LA segment: kind "la", alpha, q0, q1 (q = sgn κ |κ|^−α, log|κ| for α = 0, in user
 /// units: linear in s, [Miura et al. 2013] Eqs. (2)–(3)), lambda (|dq/ds|/|α|, |dq/ds| for α = 0), length,
 /// start {x, y}, theta, kappa, theta_end, kappa_end.

@@ -28,11 +28,15 @@ Json planar_segment(const LaSegment& seg) {
   return j;
 }
 
+void set_extent(Json& r, double length, double kappa0, double kappa1) {
+  r["length"] = number(length);
+  r["kappa0"] = number(kappa0);
+  r["kappa1"] = number(kappa1);
+}
+
 void add_planar_curve(Json& r, const PlanarCurve& curve) {
   if (curve.segments().empty()) return;
-  r["length"] = number(curve.length());
-  r["kappa0"] = number(curve.kappa_at(0));
-  r["kappa1"] = number(curve.kappa_at(curve.length()));
+  set_extent(r, curve.length(), curve.kappa_at(0), curve.kappa_at(curve.length()));
   Json segs = Json::array();
   for (const LaSegment& seg : curve.segments()) segs.push_back(planar_segment(seg));
   r["segments"] = std::move(segs);
@@ -66,9 +70,7 @@ void add_planar_points(Json& r, const PlanarCurve& curve, int n, const AnyQuadra
 
 void add_space_curve(Json& r, const SpaceCurve& curve) {
   if (curve.pieces().empty()) return;
-  r["length"] = number(curve.length());
-  r["kappa0"] = number(curve.kappa_at(0));
-  r["kappa1"] = number(curve.kappa_at(curve.length()));
+  set_extent(r, curve.length(), curve.kappa_at(0), curve.kappa_at(curve.length()));
   Json segs = Json::array();
   for (size_t k = 0; k < curve.pieces().size(); ++k) {
     const LaSpaceCurve& law = curve.pieces()[k].law;
