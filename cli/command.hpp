@@ -7,13 +7,14 @@
 //   2  invalid input: an InputError or a CLI11 parse error (unknown subcommand or option, with
 //      the closest valid name suggested; missing or malformed value): one line on stderr,
 //      `lac <subcommand>: …`, naming the parameter;
+//      With --batch: a row with invalid input prints its error object and the batch goes on;
+//      the exit status is 2 at the end (record_invalid_row()).
 //   3  the command ran and printed its result, but the result is not usable
 //      (lac::usable(status) is false: no_solution, not_converged, max_iterations,
 //      numerical_failure). The rule: a subcommand calls record_status() with the status of
-//      every result it prints — a construction's summary, each point of `eval`/`quadratic`,
-//      each sampled point of `space --points`, a special function's value — and the exit status
-//      is 3 if any of them is not usable. (Points are only sampled from a usable curve, so for
-//      the constructions the summary decides.)
+//      every result it prints — a report's status (cli/report.hpp records it), each sampled
+//      point, a special function's value — and the exit status is 3 if any of them is not
+//      usable (and no batch row was invalid).
 //   1  an internal error (an unexpected exception): a bug.
 #include <CLI/CLI.hpp>
 #include <functional>
@@ -37,6 +38,12 @@ inline constexpr int kExitOk = 0, kExitInternalError = 1, kExitInvalidInput = 2,
 /// Records the status of a result the running subcommand prints; run() exits with 3 if any
 /// recorded status is not usable. Call it once per printed result (see the rule above).
 void record_status(Status status);
+/// Records a batch row with invalid input: run() then exits with 2.
+void record_invalid_row();
+
+/// An InputError's message without the "lac …: " its CLI thrower put in front (run() adds the
+/// command's own); a library function's name ("LaCurve: …") stays.
+std::string without_lac_prefix(const std::string& message);
 
 std::vector<CommandSetup>& command_registry();
 
@@ -63,11 +70,9 @@ T* owned(Args&&... args) {
 /// children to it (e.g. "special gamma-inc", "special erfi-inv").
 CLI::App& parent_command(CLI::App& app, const std::string& name, const std::string& description);
 
-/// Output formats shared by subcommands.
-enum class Format { json, csv, table, svg };
-/// Adds `--format` with the given allowed names (first is the default) and returns its target.
-std::string* add_format_option(CLI::App& sub, std::vector<std::string> allowed);
-Format parse_format(const std::string& name);
+/// Adds `--format json|csv` (json the default) to a command without a report (`special …`) and
+/// returns its target.
+std::string* add_format_option(CLI::App& sub);
 
 /// Parses "x,y" or "x,y,z" into doubles; InputError naming `parameter` on bad text.
 std::vector<double> parse_tuple(const std::string& text, size_t expected, const std::string& parameter);

@@ -1,90 +1,79 @@
-// lac eval: position and frame of a standard-form planar LA curve at θ or s.
-#include <iostream>
-#include <nlohmann/json.hpp>
-#include <optional>
+// lac eval: position and frame of a standard-form planar LA curve at θ or s (docs/math.md §1).
+#include <cmath>
 
-#include "cli/command.hpp"
+#include "cli/batch.hpp"
+#include "cli/options.hpp"
 #include "cli/quadrature_args.hpp"
-#include "lac/curves/planar/la_position.hpp"
 #include "io/timing.hpp"
+#include "lac/curves/planar/la_position.hpp"
+#include "lac/curves/planar/standard_form.hpp"
 
 namespace lac::cli {
 namespace {
 
 struct EvalArgs {
-  double alpha = 0, lambda = 0;
-  std::optional<double> theta, s;
+  CommonArgs common;
+  std::optional<double> alpha, lambda, theta, s;
   std::string form = "auto";
   QuadratureArgs quadrature{.integrator = "gauss-kronrod"};
-  int points = 1;
-  std::string* format = nullptr;
 };
 
-nlohmann::json to_json(const PositionResult& r, double seconds) {
-  return {{"x", r.point.position.real()}, {"y", r.point.position.imag()}, {"s", r.point.s},
-          {"theta", r.point.theta},       {"rho", r.point.rho},           {"kappa", r.point.kappa},
-          {"error_estimate", r.error_estimate}, {"evaluations", r.evaluations}, {"seconds", seconds},
-          {"status", std::string(to_string(r.status))}, {"form", std::string(to_string(r.form))}};
+/// The arc of the standard form from s = 0 to `s_end` as a segment (none when s_end = 0 or its
+/// values are not representable).
+Json standard_arc(const LaCurve& curve, double s_end) {
+  Json segs = Json::array();
+  if (s_end == 0) return segs;
+  try {
+    segs.push_back(planar_segment(to_segment(StandardPiece{curve, Parameter::s, 0.0, s_end, {}})));
+  } catch (const InputError&) {
+  }
+  return segs;
 }
 
-void run(const EvalArgs& a) {
-  const LaCurve curve(a.alpha, a.lambda);
+Report solve(const EvalArgs& a) {
+  const LaCurve curve(need(a.alpha, "alpha"), need(a.lambda, "lambda"));
+  if (a.theta && a.s) throw_input_error("lac eval", "theta", "give one of --theta or --s, not both");
+  if (!a.theta && !a.s) throw_input_error("lac eval", "theta", "one of --theta or --s is required");
   const Parameter p = a.theta ? Parameter::theta : Parameter::s;
-  const double t = a.theta ? *a.theta : *a.s;
+  const double t = a.theta ? radians(*a.theta, a.common) : *a.s;
   curve.check(p, t, p == Parameter::theta ? "theta" : "s");
   const Form form = parse_form(a.form);
   const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
-  if (a.points < 1 || a.points > 1'000'000) throw_input_error("lac eval", "points", a.points, "[1, 1000000]");
+  const int n = sample_count(a.common);
   io::Stopwatch clock;
-  std::vector<PositionResult> results;
-  if (a.points == 1) {
-    results.push_back(position_at(curve, p, t, method, form));
-  } else {
-    results = polyline(curve, p, 0.0, t, a.points, method, form);
-  }
+  const PositionResult at = position_at(curve, p, t, method, form);
+  std::vector<PositionResult> pts;
+  if (n > 0) pts = polyline(curve, p, 0.0, t, n, method, form);
   const double seconds = clock.seconds();
-  for (const auto& r : results) record_status(r.status);  // a polyline is usable if every point is
-  const Format fmt = parse_format(*a.format);
-  if (fmt == Format::json) {
-    if (a.points == 1) {
-      std::cout << to_json(results.front(), seconds).dump(2) << "\n";
-    } else {
-      nlohmann::json arr = nlohmann::json::array();
-      for (const auto& r : results) arr.push_back(to_json(r, seconds));
-      std::cout << arr.dump(2) << "\n";
-    }
-    return;
+  const long evaluations = at.evaluations + (pts.empty() ? 0 : pts.back().evaluations);  // cumulative along a polyline
+  Report r{evaluation_report(at.status, at.status == Status::ok ? "" : at.message, evaluations, seconds, describe(method)), {}};
+  Json& j = r.json;
+  const double s_end = at.point.s;
+  set_extent(j, std::abs(s_end), 1.0, at.point.kappa);
+  j["segments"] = standard_arc(curve, s_end);
+  j["point"] = planar_point(at);
+  j["info"] = {{"form", std::string(to_string(at.form))},
+               {"rho", number(at.point.rho)},
+               {"error_estimate", number(at.error_estimate)}};
+  if (!pts.empty()) {
+    Json arr = Json::array();
+    for (const PositionResult& q : pts) arr.push_back(planar_point(q));
+    j["points"] = std::move(arr);
   }
-  const bool csv = fmt == Format::csv;
-  const char* sep = csv ? "," : "  ";
-  std::cout.precision(17);
-  if (!csv) std::cout << "# " << describe(method) << ", form " << to_string(results.front().form) << ", " << seconds << " s\n";
-  std::cout << "x" << sep << "y" << sep << "s" << sep << "theta" << sep << "rho" << sep << "kappa" << sep
-            << "error_estimate" << sep << "evaluations" << sep << "status\n";
-  for (const auto& r : results) {
-    std::cout << r.point.position.real() << sep << r.point.position.imag() << sep << r.point.s << sep << r.point.theta
-              << sep << r.point.rho << sep << r.point.kappa << sep << r.error_estimate << sep << r.evaluations << sep
-              << to_string(r.status) << "\n";
-  }
+  return r;
 }
 
 void setup(CLI::App& app) {
   auto* a = owned<EvalArgs>();
-  auto* sub = app.add_subcommand("eval", "Point(s) on the standard-form planar LA curve (origin, tangent +x, rho = 1 at 0)");
-  sub->add_option("--alpha", a->alpha, "Slope alpha of the logarithmic curvature graph (any finite real)")->required();
-  sub->add_option("--lambda", a->lambda, "Lambda >= 0 (0 is the unit circle)")->required();
-  auto* th = sub->add_option("--theta", a->theta, "Tangent angle (rad) at which to evaluate");
-  auto* so = sub->add_option("--s", a->s, "Arc length at which to evaluate");
-  th->excludes(so);
-  so->excludes(th);
+  auto* sub = app.add_subcommand("eval", "Point on the standard-form planar LA curve (origin, tangent +x, rho = 1 at s = 0)");
+  sub->add_option("--alpha", a->alpha, "Slope alpha of the logarithmic curvature graph, any finite real (required)");
+  sub->add_option("--lambda", a->lambda, "Lambda >= 0, 0 is the unit circle (required)");
+  sub->add_option("--theta", a->theta, "Tangent angle at which to evaluate, rad (degrees with --degrees)");
+  sub->add_option("--s", a->s, "Arc length at which to evaluate");
   sub->add_option("--form", a->form, "Position integral: theta | s | auto")->capture_default_str();
   add_quadrature_options(*sub, a->quadrature);
-  sub->add_option("--points", a->points, "Number of points from the reference point (0) to the given theta/s")->capture_default_str();
-  a->format = add_format_option(*sub, {"json", "csv", "table"});
-  sub->callback([a, th, so] {
-    if (!*th && !*so) throw_input_error("lac eval", "theta", "one of --theta or --s is required");
-    run(*a);
-  });
+  add_common_options(*sub, a->common, true);
+  set_solver(*sub, *a, solve);
 }
 
 LAC_REGISTER_COMMAND(setup);

@@ -1,7 +1,7 @@
 #pragma once
 // The quadrature options of a subcommand (`--integrator`, `--h`, `--tol`, `--panels`), with help
-// texts generated from the quadrature registry (integrators/registry.hpp). Used by `lac eval`,
-// `lac quadratic`, `lac g1` and `lac compound`.
+// texts generated from the quadrature registry (integrators/registry.hpp). Used by every planar
+// curve command (eval, quadratic, g1, compound, scurve, g2).
 #include <optional>
 #include <string>
 #include <string_view>

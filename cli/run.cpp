@@ -30,17 +30,10 @@ std::vector<std::shared_ptr<void>>& option_storage() {
   return storage;
 }
 
-std::string* add_format_option(CLI::App& sub, std::vector<std::string> allowed) {
-  auto* target = owned<std::string>(allowed.front());
-  sub.add_option("--format", *target, "Output format")->check(CLI::IsMember(allowed))->capture_default_str();
+std::string* add_format_option(CLI::App& sub) {
+  auto* target = owned<std::string>("json");
+  sub.add_option("--format", *target, "Output format: json | csv")->check(CLI::IsMember({"json", "csv"}))->capture_default_str();
   return target;
-}
-
-Format parse_format(const std::string& name) {
-  if (name == "json") return Format::json;
-  if (name == "csv") return Format::csv;
-  if (name == "svg") return Format::svg;
-  return Format::table;
 }
 
 std::vector<double> parse_tuple(const std::string& text, size_t expected, const std::string& parameter) {
@@ -77,10 +70,10 @@ std::vector<std::vector<double>> parse_points(const std::string& text, size_t ex
 
 namespace {
 
-/// The statuses recorded by the running subcommand (reset by run()).
-std::vector<Status>& recorded_statuses() {
-  static std::vector<Status> statuses;
-  return statuses;
+/// Whether the running subcommand printed a result that is not usable (reset by run()).
+bool& unusable_recorded() {
+  static bool any = false;
+  return any;
 }
 
 /// Edit distance with adjacent transpositions counted as one edit ("alpah" -> "alpha": 1).
@@ -194,8 +187,13 @@ std::string one_line(const std::string& text) {
   return out;
 }
 
-/// An InputError's message without the "lac …: " its CLI thrower put in front (run() adds the
-/// command's own); a library function's name ("LaCurve: …") stays.
+bool& invalid_rows() {
+  static bool any = false;
+  return any;
+}
+
+}  // namespace
+
 std::string without_lac_prefix(const std::string& message) {
   if (message.rfind("lac", 0) == 0 && message.size() > 3 && (message[3] == ':' || message[3] == ' ')) {
     const size_t colon = message.find(": ");
@@ -204,9 +202,8 @@ std::string without_lac_prefix(const std::string& message) {
   return message;
 }
 
-}  // namespace
-
-void record_status(Status status) { recorded_statuses().push_back(status); }
+void record_status(Status status) { unusable_recorded() = unusable_recorded() || !lac::usable(status); }
+void record_invalid_row() { invalid_rows() = true; }
 
 }  // namespace lac::cli
 
@@ -214,7 +211,8 @@ int lac::cli::run(int argc, char** argv) {
   struct FreeOptionStorage {  // declared before the app: runs after the app is destroyed
     ~FreeOptionStorage() { lac::cli::option_storage().clear(); }
   } free_storage;
-  recorded_statuses().clear();
+  unusable_recorded() = false;
+  invalid_rows() = false;
   CLI::App app{"lac — log-aesthetic curves: evaluate curves, build segments, reproduce published tables.\n"
                "Run `lac <command> --help` for each command's options.\n"
                "Exit status: 0 usable result, 2 invalid input, 3 no usable result (see the printed status)."};
@@ -246,7 +244,6 @@ int lac::cli::run(int argc, char** argv) {
     std::cerr << command_name(selected_command(app)) << ": internal error: " << one_line(e.what()) << "\n";
     return kExitInternalError;
   }
-  for (Status s : recorded_statuses())
-    if (!lac::usable(s)) return kExitNotUsable;
-  return kExitOk;
+  if (invalid_rows()) return kExitInvalidInput;
+  return unusable_recorded() ? kExitNotUsable : kExitOk;
 }

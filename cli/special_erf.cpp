@@ -1,8 +1,6 @@
 // lac special erfi-inv / erf-inv: inverse error functions (special/erf_family.hpp).
-#include <iostream>
-#include <nlohmann/json.hpp>
-
 #include "cli/command.hpp"
+#include "cli/report.hpp"
 #include "lac/common/error.hpp"
 #include "lac/special/erf_family.hpp"
 
@@ -25,16 +23,13 @@ double parse_y(const std::string& text) {
 
 void print(const InverseArgs& a, const char* function, double y, const special::InverseResult& r) {
   record_status(r.status);
-  if (parse_format(*a.format) == Format::json) {
-    const nlohmann::json j = {{"function", function}, {"y", y},
-                              {"value", r.value},     {"iterations", r.iterations},
-                              {"method", a.method},   {"status", std::string(to_string(r.status))}};
-    std::cout << j.dump(2) << "\n";
-    return;
-  }
-  std::cout.precision(17);
-  std::cout << function << "(" << y << ") = " << r.value << "  (" << a.method << ", " << r.iterations << " iterations, "
-            << to_string(r.status) << ")\n";
+  print_record(Json{{"status", std::string(to_string(r.status))},
+                    {"function", function},
+                    {"y", number(y)},
+                    {"value", number(r.value)},
+                    {"iterations", r.iterations},
+                    {"method", a.method}},
+               *a.format);
 }
 
 void setup(CLI::App& app) {
@@ -46,7 +41,7 @@ void setup(CLI::App& app) {
   erfi_cmd->add_option("--method", erfi_args->method, "ours | hybrid-003 (003's bisection-Newton, |x| <= 26)")
       ->check(CLI::IsMember({"ours", "hybrid-003"}))
       ->capture_default_str();
-  erfi_args->format = add_format_option(*erfi_cmd, {"json", "table"});
+  erfi_args->format = add_format_option(*erfi_cmd);
   erfi_cmd->callback([erfi_args] {
     const double y = parse_y(erfi_args->y_text);
     print(*erfi_args, "erfi_inv", y, special::erfi_inv_detailed(y, special::parse_erf_inverse_method(erfi_args->method)));
@@ -58,7 +53,7 @@ void setup(CLI::App& app) {
   erf_cmd->add_option("--method", erf_args->method, "boost (Boost.Math erf_inv) | hybrid-003 (003's, |x| <= 5)")
       ->check(CLI::IsMember({"boost", "hybrid-003"}))
       ->capture_default_str();
-  erf_args->format = add_format_option(*erf_cmd, {"json", "table"});
+  erf_args->format = add_format_option(*erf_cmd);
   erf_cmd->callback([erf_args] {
     const double y = parse_y(erf_args->y_text);
     if (!(std::abs(y) < 1.0)) throw_input_error("lac special erf-inv", "y", y, "(-1, 1)");

@@ -1,8 +1,6 @@
 // lac special gamma-inc: the upper incomplete gamma function Γ(a, z), real a, complex z.
-#include <iostream>
-#include <nlohmann/json.hpp>
-
 #include "cli/command.hpp"
+#include "cli/report.hpp"
 #include "lac/common/error.hpp"
 #include "lac/special/incomplete_gamma.hpp"
 
@@ -21,25 +19,16 @@ void run(const GammaIncArgs& args) {
   const std::complex<double> z(zz[0], zz[1]);
   const special::GammaIncResult r = args.scaled ? special::gamma_inc_scaled(args.a, z) : special::gamma_inc(args.a, z);
   record_status(r.status);
-  const Format fmt = parse_format(*args.format);
-  if (fmt == Format::json) {
-    const nlohmann::json j = {{"re", r.value.real()},
-                              {"im", r.value.imag()},
-                              {"a", args.a},
-                              {"z_re", z.real()},
-                              {"z_im", z.imag()},
-                              {"scaled", args.scaled},
-                              {"status", std::string(to_string(r.status))},
-                              {"region", std::string(special::to_string(r.region))},
-                              {"iterations", r.iterations}};
-    std::cout << j.dump(2) << "\n";
-    return;
-  }
-  std::cout.precision(17);
-  std::cout << (args.scaled ? "exp(z) z^-a Gamma(a, z)" : "Gamma(a, z)") << " = " << r.value.real()
-            << (r.value.imag() < 0 ? " - " : " + ") << std::abs(r.value.imag()) << "i\n"
-            << "status " << to_string(r.status) << ", region " << special::to_string(r.region) << ", "
-            << r.iterations << " iterations\n";
+  print_record(Json{{"status", std::string(to_string(r.status))},
+                    {"re", number(r.value.real())},
+                    {"im", number(r.value.imag())},
+                    {"a", args.a},
+                    {"z_re", z.real()},
+                    {"z_im", z.imag()},
+                    {"scaled", args.scaled},
+                    {"region", std::string(special::to_string(r.region))},
+                    {"iterations", r.iterations}},
+               *args.format);
 }
 
 void setup(CLI::App& app) {
@@ -50,7 +39,7 @@ void setup(CLI::App& app) {
   sub->add_option("--a", args->a, "Order a in [-10, 10] (a <= 0 allowed; a = 0 is E1)")->required();
   sub->add_option("--z", args->z, "Argument as RE,IM (z != 0 when a <= 0)")->required();
   sub->add_flag("--scaled", args->scaled, "Print exp(z) z^-a Gamma(a, z) instead (no overflow for large |z|)");
-  args->format = add_format_option(*sub, {"table", "json"});
+  args->format = add_format_option(*sub);
   sub->callback([args] { run(*args); });
 }
 

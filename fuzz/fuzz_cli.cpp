@@ -41,6 +41,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   static NullBuffer null_buffer;
   std::cout.rdbuf(&null_buffer);
   if (!std::freopen("/dev/null", "w", stdout)) return 0;
+  // `--batch -` reads stdin: an empty one, so that a call never waits for input.
+  if (!std::freopen("/dev/null", "r", stdin)) return 0;
   return 0;
 }
 

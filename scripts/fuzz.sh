@@ -103,9 +103,14 @@ if [ -z "$TARGETS" ]; then
   TARGETS=$(for f in fuzz/fuzz_*.cpp; do basename "$f" .cpp | sed 's/^fuzz_//'; done | tr '\n' ' ')
 fi
 
-# The CLI target's dictionary: every option and subcommand name in the cli/ sources.
+# The CLI target's dictionary: every option and subcommand name in the cli/ sources (a call may
+# span lines: the sources are joined first) and the --format values.
 dict="$BUILD_DIR/fuzz-cli.dict"
-grep -ohE '"--?[a-z][a-z0-9-]*"|add_subcommand\("[a-z0-9-]+"' cli/*.cpp | sed 's/add_subcommand(//' | sort -u >"$dict"
+{
+  grep -ohE '"--?[a-z][a-z0-9-]*"' cli/*.cpp
+  cat cli/*.cpp | tr '\n' ' ' | grep -oE '(add_subcommand|parent_command)\( *(app, *)?"[a-z0-9-]+"' | grep -oE '"[a-z0-9-]+"'
+  printf '"%s"\n' json csv svg
+} | sort -u >"$dict"
 
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=0:allocator_may_return_null=1:symbolize=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"

@@ -35,10 +35,10 @@ const std::string kG2 = "g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 --p1 4,0 --theta1
 const std::vector<Command> kCommands = {
     {"eval", "eval --alpha 2 --lambda 1 --theta 1", "eval --alpha 2 --lambda -1 --theta 1", "lambda",
      "eval --alpha 1 --lambda 1 --theta 1 --integrator rk4 --h 1e-9"},
-    {"eval", "eval --alpha -1 --lambda 1 --s 0.8 --points 5", "eval --alpha 2 --lambda 1 --theta 1 --points 0", "points",
-     "eval --alpha 1 --lambda 1 --theta 1 --points 3 --integrator rk4 --h 1e-9"},
-    {"quadratic", "quadratic --alpha 1 --gamma 1 --lambda 1 --points 3", "quadratic --alpha 1 --gamma 1 --lambda 0",
-     "lambda", "quadratic --alpha 1 --gamma 1 --lambda 1 --points 3 --integrator rk4 --h 1e-9"},
+    {"eval", "eval --alpha -1 --lambda 1 --s 0.8 --samples 5", "eval --alpha 2 --lambda 1 --theta 1 --samples 1", "samples",
+     "eval --alpha 1 --lambda 1 --theta 1 --samples 3 --integrator rk4 --h 1e-9"},
+    {"quadratic", "quadratic --alpha 1 --gamma 1 --lambda 1 --samples 3", "quadratic --alpha 1 --gamma 1 --lambda 0",
+     "lambda", "quadratic --alpha 1 --gamma 1 --lambda 1 --samples 3 --integrator rk4 --h 1e-9"},
     {"g1", "g1 --points '0,0 1,0 2,1' --alpha -1", "g1 --points '0,0 1,0 2,1 3,1' --alpha -1", "points",
      "g1 --points '0,0 1,0 2,1' --alpha 5"},  // outside the drawable region: no_solution
     {"compound", "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3",

@@ -54,7 +54,7 @@ TEST(CliEvalIgf, WorksAndRejectsStep) {
   ASSERT_EQ(ok.status, 0) << ok.out;
   const auto j = nlohmann::json::parse(ok.out);
   EXPECT_EQ(j["status"], "ok");
-  EXPECT_TRUE(std::isfinite(j["x"].get<double>()));
+  EXPECT_TRUE(std::isfinite(j["point"]["x"].get<double>()));
   const lac::test::CliRun bad = run_lac("eval --alpha 2 --lambda 1 --theta 1 --integrator igf --h 0.1");
   EXPECT_EQ(bad.status, 2) << bad.out;
   EXPECT_NE(bad.out.find("h"), std::string::npos) << bad.out;

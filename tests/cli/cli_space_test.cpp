@@ -22,14 +22,25 @@ const std::string kEnds =
     "--v1=-0.4838825660252134,0.8293701183329452,0.279289937364832 ";
 
 TEST(CliSpace, CompoundJsonHasTheDocumentedKeysAndPoints) {
-  const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --r-theta 0.5 --points 7");
+  const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --r-theta 0.5 --samples 7");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"status", "length", "tangent_error", "iterations", "seconds", "segments", "points", "joint"})
+  for (const char* key : {"status", "length", "kappa0", "kappa1", "residuals", "iterations", "seconds", "segments", "points", "info"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["status"], "ok");
-  EXPECT_LE(j["tangent_error"].get<double>(), 1e-10);
-  EXPECT_EQ(j["segments"].size(), 2u);
+  EXPECT_LE(j["residuals"]["angle"].get<double>(), 1e-10);
+  EXPECT_TRUE(j["info"]["joint"]["x"].is_number());
+  ASSERT_EQ(j["segments"].size(), 2u);
+  for (const auto& seg : j["segments"]) {
+    EXPECT_EQ(seg["kind"], "la-space");
+    for (const char* key : {"alpha", "beta", "lambda", "omega", "nu", "type", "length", "start", "kappa", "tau"})
+      EXPECT_TRUE(seg.contains(key)) << key;
+  }
+  // The second segment starts at the joint; the lengths add up.
+  EXPECT_NEAR(j["segments"][1]["start"]["x"].get<double>(), j["info"]["joint"]["x"].get<double>(), 1e-12);
+  EXPECT_NEAR(j["segments"][0]["length"].get<double>() + j["segments"][1]["length"].get<double>(),
+              j["length"].get<double>(), 1e-14);
+  for (const char* key : {"s", "x", "y", "z", "kappa", "tau"}) EXPECT_TRUE(j["points"][0].contains(key)) << key;
   ASSERT_EQ(j["points"].size(), 7u);
   const auto& last = j["points"].back();
   EXPECT_NEAR(last["x"].get<double>(), 0.36235775447667362, 1e-12);
@@ -47,12 +58,16 @@ TEST(CliSpace, G1WithEachSolverAndCsv) {
   }
   const auto c = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --format csv");
   ASSERT_EQ(c.status, 0) << c.out;
-  EXPECT_EQ(c.out.rfind("status,length,tangent_error,iterations,evaluations,seconds,segments\n", 0), 0u) << c.out;
+  EXPECT_EQ(c.out.rfind("# status,message,length,kappa0,kappa1,iterations,evaluations,seconds,solver,integrator,", 0), 0u)
+      << c.out;
+  EXPECT_NE(c.out.find("\nkind,alpha,beta,lambda,omega,nu,type,length,start.x,start.y,start.z,kappa,tau\nla-space,"),
+            std::string::npos)
+      << c.out;
 }
 
 TEST(CliSpace, EveryIntegratorByNameAndUniformPoints) {
   for (const char* integrator : {"magnus6", "rk45", "rk4"}) {
-    const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --points 5 "
+    const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --samples 5 "
                            "--integrator " + integrator);
     ASSERT_EQ(r.status, 0) << r.out;
     const auto j = nlohmann::json::parse(r.out);
@@ -61,8 +76,6 @@ TEST(CliSpace, EveryIntegratorByNameAndUniformPoints) {
     const double length = j["length"].get<double>();
     ASSERT_EQ(j["points"].size(), 5u);
     for (size_t k = 0; k < 5; ++k) EXPECT_NEAR(j["points"][k]["s"].get<double>(), length * k / 4, 1e-14 * length);
-    EXPECT_EQ(j["points"][0]["segment"], 0);
-    EXPECT_EQ(j["points"][4]["segment"], 1);
   }
   auto r = run_lac("space " + kEnds + "--alpha 0 --beta 0 --omega 0.1 --type 1 --integrator euler");
   EXPECT_EQ(r.status, 2);
@@ -72,14 +85,14 @@ TEST(CliSpace, EveryIntegratorByNameAndUniformPoints) {
 TEST(CliSpace, EveryIntegratorWithEverySolver) {
   for (const char* integrator : {"magnus6", "rk45", "rk4"})
     for (const char* solver : {"newton", "ceres", "simplex"}) {
-      const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --points 3 " +
+      const auto r = run_lac("space " + kEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1 --alpha1 1 --beta1 1 --samples 3 " +
                              "--integrator " + integrator + " --solver " + solver);
       ASSERT_EQ(r.status, 0) << integrator << " " << solver << ": " << r.out;
       const auto j = nlohmann::json::parse(r.out);
       EXPECT_EQ(j["integrator"], integrator);
       EXPECT_EQ(j["solver"], solver);
       EXPECT_EQ(j["status"], "ok") << integrator << " " << solver << ": " << j["message"];
-      EXPECT_LE(j["tangent_error"].get<double>(), 1e-10);
+      EXPECT_LE(j["residuals"]["angle"].get<double>(), 1e-10);
       ASSERT_EQ(j["points"].size(), 3u);
       const auto& last = j["points"].back();
       EXPECT_NEAR(last["x"].get<double>(), 0.36235775447667362, 1e-12) << integrator << " " << solver;

@@ -4,10 +4,10 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <string>
 #include <vector>
 
+#include "lac/constructions/triangle_g1.hpp"
 #include "lac/integrators/registry.hpp"
 #include "lac/solvers/root_1d.hpp"
 #include "tests/support/run_cli.hpp"
@@ -18,53 +18,62 @@ namespace {
 const std::string kG1 = "g1 --points '0,0 1,0 2,1' --alpha -1";
 const std::string kCompound = "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3";  // swapped, mirrored
 
-nlohmann::json run_json(const std::string& args, int exit_status = 0) {
+nlohmann::ordered_json run_json(const std::string& args, int exit_status = 0) {
   const test::CliRun run = test::run_lac(args);
   EXPECT_EQ(run.status, exit_status) << args << "\n" << run.out;
   try {
-    return nlohmann::json::parse(run.out);
+    return nlohmann::ordered_json::parse(run.out);
   } catch (const nlohmann::json::exception& e) {
     ADD_FAILURE() << args << ": not JSON (" << e.what() << ")\n" << run.out;
     return {};
   }
 }
 
-std::set<std::string> keys(const nlohmann::json& j) {
-  std::set<std::string> out;
-  for (const auto& [k, v] : j.items()) out.insert(k);
+/// The keys in the printed order (parsed as ordered_json).
+std::vector<std::string> ordered_keys(const nlohmann::ordered_json& j) {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : j.items()) out.push_back(k);
   return out;
 }
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-TEST(CliTriangle, JsonKeys) {
-  const std::set<std::string> common = {"status",     "length",         "kappa0",         "kappa1",     "alpha",
-                                        "lambda",     "lambda_user",    "segment_lengths", "segment0_at_a0", "turning",
-                                        "tangent_error", "iterations",  "bracket_probes", "trials",     "evaluations",
-                                        "seconds",    "solver",         "integrator"};
-  const nlohmann::json g = run_json(kG1);
-  EXPECT_EQ(keys(g), common) << g.dump();
-  std::set<std::string> compound = common;
-  compound.insert({"joint", "rho_joint", "points"});
-  const nlohmann::json c = run_json(kCompound + " --points-out 9");
-  EXPECT_EQ(keys(c), compound) << c.dump();
-  EXPECT_EQ(c["segment0_at_a0"], false);
+TEST(CliTriangle, JsonKeysAndSegmentsAgreeWithTheLibrary) {
+  const std::vector<std::string> common = {"status",     "message",    "length",    "kappa0", "kappa1",
+                                           "iterations", "evaluations", "seconds",  "solver", "integrator",
+                                           "residuals",  "segments",   "info"};
+  const nlohmann::ordered_json g = run_json(kG1);
+  EXPECT_EQ(ordered_keys(g), common) << g.dump();
+  EXPECT_TRUE(g["message"].is_null());
+  std::vector<std::string> with_points = common;
+  with_points.push_back("points");
+  const nlohmann::ordered_json c = run_json(kCompound + " --samples 9");
+  EXPECT_EQ(ordered_keys(c), with_points) << c.dump();
+  EXPECT_EQ(c["info"]["segment0_at_a0"], false);
+  EXPECT_LT(c["info"]["turning"].get<double>(), 0);  // signed: a right turn
   EXPECT_EQ(c["integrator"], "gk-tanh-sinh");
   EXPECT_EQ(c["solver"], "toms748");
-  // The points run from a0 to a2; the pieces share them by length, the joint once (in piece 0).
+  // Segments in the curve's order from a0; swapped: the first one is 001's segment 1 (α1).
+  const TriangleResult lib = solve_compound({{3, 2}, {1.5, 0.2}, {0.5, 0.9}}, 2, 0.5, 0.3);
+  ASSERT_EQ(c["segments"].size(), 2u);
+  for (size_t k = 0; k < 2; ++k) {
+    const auto& seg = c["segments"][k];
+    const TrianglePiece& piece = lib.info.pieces[1 - k];
+    EXPECT_EQ(seg["kind"], "la");
+    EXPECT_EQ(seg["alpha"].get<double>(), piece.alpha);
+    EXPECT_LE(rel(seg["lambda"].get<double>(), piece.lambda_user), 1e-12) << seg.dump();
+    EXPECT_LE(rel(seg["length"].get<double>(), lib.curve.segments()[k].length()), 1e-15);
+  }
+  EXPECT_NEAR(c["segments"][1]["start"]["x"].get<double>(), c["info"]["joint"]["x"].get<double>(), 1e-12);
+  EXPECT_NEAR(c["segments"][0]["kappa"].get<double>(), c["kappa0"].get<double>(), 1e-15);
+  EXPECT_NEAR(c["segments"][1]["kappa_end"].get<double>(), c["kappa1"].get<double>(), 1e-12);
+  // The points run from a0 to a2, uniform in s.
   const auto& pts = c["points"];
   ASSERT_EQ(pts.size(), 9u);
   EXPECT_NEAR(pts.front()["x"].get<double>(), 3, 1e-14);
   EXPECT_NEAR(pts.back()["x"].get<double>(), 0.5, 1e-14);
   EXPECT_NEAR(pts.back()["s"].get<double>(), c["length"].get<double>(), 1e-14);
-  EXPECT_EQ(pts.front()["segment"], 1);  // swapped: segment 0 (α0) is at a2
-  EXPECT_EQ(pts.back()["segment"], 0);
-  int joints = 0;
-  for (const auto& p : pts)
-    joints += std::abs(p["x"].get<double>() - c["joint"][0].get<double>()) < 1e-12 &&
-              std::abs(p["y"].get<double>() - c["joint"][1].get<double>()) < 1e-12;
-  EXPECT_EQ(joints, 1);
-  const double piece0 = c["segment_lengths"][0].get<double>(), piece1 = c["segment_lengths"][1].get<double>();
+  const double piece0 = c["segments"][0]["length"].get<double>(), piece1 = c["segments"][1]["length"].get<double>();
   EXPECT_NEAR(piece0 + piece1, c["length"].get<double>(), 1e-14);
 }
 
@@ -77,19 +86,19 @@ TEST(CliTriangle, EveryIntegratorAndSolverAgree) {
     for (const auto& alias : m.aliases) solvers.emplace_back(alias);
   }
   for (const std::string& base : {kG1, kCompound}) {
-    const nlohmann::json ref = run_json(base);
+    const nlohmann::ordered_json ref = run_json(base);
     ASSERT_EQ(ref["status"], "ok") << ref.dump();
     for (const MethodInfo& q : quadrature_methods()) {
       for (const std::string& solver : solvers) {
         const std::string args = base + " --integrator " + std::string(q.name) + " --solver " + solver;
-        const nlohmann::json j = run_json(args);
+        const nlohmann::ordered_json j = run_json(args);
         ASSERT_EQ(j["status"], "ok") << args << ": " << j.dump();
         EXPECT_EQ(j["solver"], std::string(to_string(parse_root_method(solver)))) << args;
         EXPECT_EQ(j["integrator"].get<std::string>().rfind(std::string(q.name), 0), 0u) << args << ": " << j["integrator"];
         EXPECT_LE(rel(j["length"].get<double>(), ref["length"].get<double>()), 1e-11) << args;
         EXPECT_LE(rel(j["kappa0"].get<double>(), ref["kappa0"].get<double>()), 1e-11) << args;
-        EXPECT_LE(rel(j["lambda_user"][0].get<double>(), ref["lambda_user"][0].get<double>()), 1e-11) << args;
-        EXPECT_LE(j["tangent_error"].get<double>(), 1e-11) << args;
+        EXPECT_LE(rel(j["segments"][0]["lambda"].get<double>(), ref["segments"][0]["lambda"].get<double>()), 1e-11) << args;
+        EXPECT_LE(j["residuals"]["angle"].get<double>(), 1e-11) << args;
       }
     }
   }
@@ -98,12 +107,18 @@ TEST(CliTriangle, EveryIntegratorAndSolverAgree) {
 TEST(CliTriangle, CsvAndSvg) {
   const test::CliRun csv = test::run_lac(kCompound + " --format csv");
   ASSERT_EQ(csv.status, 0) << csv.out;
-  EXPECT_NE(csv.out.find("# status ok"), std::string::npos) << csv.out;
-  EXPECT_NE(csv.out.find("segment,alpha,lambda,lambda_user,turning,length,rho_small,rho_large\n0,2,"), std::string::npos)
+  EXPECT_EQ(csv.out.rfind("# status,message,length,kappa0,kappa1,iterations,evaluations,seconds,solver,integrator,"
+                          "residuals.position,residuals.angle,residuals.curvature,info.segment0_at_a0,info.turning,",
+                          0),
+            0u)
       << csv.out;
-  const test::CliRun points = test::run_lac(kG1 + " --format csv --points-out 5");
+  EXPECT_NE(csv.out.find("\n# ok,,"), std::string::npos) << csv.out;
+  EXPECT_NE(csv.out.find("\nkind,alpha,q0,q1,lambda,length,start.x,start.y,theta,kappa,theta_end,kappa_end\nla,0.5,"),
+            std::string::npos)
+      << csv.out;
+  const test::CliRun points = test::run_lac(kG1 + " --format csv --samples 5");
   ASSERT_EQ(points.status, 0) << points.out;
-  EXPECT_NE(points.out.find("x,y,s,theta,kappa,segment\n0,0,0,"), std::string::npos) << points.out;
+  EXPECT_NE(points.out.find("\ns,x,y,theta,kappa\n0,0,0,"), std::string::npos) << points.out;
   const test::CliRun svg = test::run_lac(kCompound + " --format svg");
   ASSERT_EQ(svg.status, 0) << svg.out;
   EXPECT_EQ(svg.out.rfind("<svg", 0), 0u) << svg.out;
@@ -112,10 +127,12 @@ TEST(CliTriangle, CsvAndSvg) {
 
 TEST(CliTriangle, StatusesAndBadInput) {
   // Proven outside the drawable region: a status with its reason, exit 3 (no usable curve).
-  const nlohmann::json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
+  const nlohmann::ordered_json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
   EXPECT_EQ(none["status"], "no_solution");
   EXPECT_NE(none["message"].get<std::string>().find("drawable region"), std::string::npos) << none.dump();
-  EXPECT_EQ(none["length"], 0.0);
+  for (const char* key : {"length", "kappa0", "kappa1"}) EXPECT_TRUE(none[key].is_null()) << key;
+  EXPECT_TRUE(none["segments"].empty());
+  EXPECT_FALSE(none.contains("points"));
   // Unknown names: exit 2 listing the valid ones.
   const test::CliRun solver = test::run_lac(kG1 + " --solver foo");
   EXPECT_EQ(solver.status, 2);

@@ -85,11 +85,11 @@ TEST(FuzzRegression, GammaIncDifferenceOfZeroToZeroIsZero) {
 // Finding R4 (fuzz_cli): a point count beyond memory is an internal error (exit 1, std::bad_alloc)
 // instead of invalid input naming the option (exit 2).
 TEST(FuzzRegression, CliRejectsHugePointCounts) {
-  for (const std::string args : {"eval --alpha 0.5 --lambda 1 --theta -0.5 --points 2147483647",
-                                 "g1 --points '0,0 1,0 2,1' --alpha 1 --points-out 2147483647"}) {
+  for (const std::string args : {"eval --alpha 0.5 --lambda 1 --theta -0.5 --samples 2147483647",
+                                 "g1 --points '0,0 1,0 2,1' --alpha 1 --samples 2147483647"}) {
     const lac::test::CliRun r = lac::test::run_lac(args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.out;
-    EXPECT_NE(r.out.find("points"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("samples = 2147483647"), std::string::npos) << r.out;
   }
 }
 

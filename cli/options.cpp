@@ -1,0 +1,35 @@
+#include "cli/options.hpp"
+
+#include <numbers>
+
+#include "lac/common/error.hpp"
+
+namespace lac::cli {
+
+void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
+  sub.add_option("--samples", a.samples,
+                 "Number of curve points to print, uniform in arc length (0: none" +
+                     std::string(planar ? "; svg draws 200" : "") + ")")
+      ->capture_default_str();
+  std::vector<std::string> formats{"json", "csv"};
+  if (planar) formats.emplace_back("svg");
+  sub.add_option("--format", a.format, "Output format: " + CLI::detail::join(formats, " | "))
+      ->check(CLI::IsMember(formats))
+      ->capture_default_str();
+  sub.add_option("--batch", a.batch,
+                 "CSV file (- for stdin) of problems, one per row, its header naming options without dashes; "
+                 "prints one result per row (JSON Lines, or CSV rows)");
+  sub.add_flag("--degrees", a.degrees, "Angles given on the command line are in degrees (output angles stay radians)");
+}
+
+int sample_count(const CommonArgs& a) {
+  if (a.samples == 1 || a.samples < 0 || a.samples > 1'000'000)
+    throw_input_error("lac", "samples", a.samples, "0 or [2, 1000000]");
+  return a.samples == 0 && a.format == "svg" ? 200 : a.samples;
+}
+
+double radians(double value, const CommonArgs& a) { return a.degrees ? value * (std::numbers::pi / 180.0) : value; }
+
+void throw_missing(const char* name) { throw_input_error("lac", name, std::string("--") + name + " is required"); }
+
+}  // namespace lac::cli

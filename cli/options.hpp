@@ -1,0 +1,59 @@
+#pragma once
+// The option vocabulary every subcommand shares (docs/cli.md):
+//   --points "x0,y0 x1,y1 …"   control points (only this meaning)
+//   --samples N                 number of output points, uniform in arc length (0: none)
+//   --format json|csv[|svg]     svg for planar curves
+//   --batch FILE|-              one problem per CSV row (cli/batch.hpp)
+//   --degrees                   every angle given on the command line is in degrees
+// plus --integrator / --solver with names from the registries (cli/quadrature_args.hpp,
+// solver_names below). Values a construction needs are std::optional and checked by need(), not
+// by CLI11's required(): in batch mode they may come from the file.
+#include <optional>
+#include <span>
+#include <string>
+
+#include "cli/command.hpp"
+
+namespace lac::cli {
+
+/// The options of every subcommand that prints a report (cli/report.hpp).
+struct CommonArgs {
+  int samples = 0;
+  std::string format = "json";
+  std::string batch;
+  bool degrees = false;
+};
+
+/// Adds --samples, --format (json | csv, and svg when `planar`), --batch and --degrees.
+void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
+
+/// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError
+/// "samples" unless 0 or in [2, 10^6].
+int sample_count(const CommonArgs& a);
+
+/// An angle from the command line in radians (it was given in degrees with --degrees).
+double radians(double value, const CommonArgs& a);
+
+/// InputError "--<name> is required", naming it.
+[[noreturn]] void throw_missing(const char* name);
+/// The value of an option a command needs; InputError naming it when it was given neither on
+/// the command line nor in the batch row.
+template <class T>
+const T& need(const std::optional<T>& value, const char* name) {
+  if (!value) throw_missing(name);
+  return *value;
+}
+
+/// "bisection | secant (newton) | toms748 | ceres": the names and aliases of a solver registry.
+template <class Info>
+std::string solver_names(std::span<const Info> methods) {
+  std::string text;
+  for (const Info& m : methods) {
+    text.append(text.empty() ? "" : " | ").append(m.name);
+    for (size_t i = 0; i < m.aliases.size(); ++i) text.append(i == 0 ? " (" : ", ").append(m.aliases[i]);
+    if (!m.aliases.empty()) text.append(")");
+  }
+  return text;
+}
+
+}  // namespace lac::cli
