@@ -386,12 +386,8 @@ Complex power_limit_integral(double delta, double p, long& evaluations) {
 }
 
 // ---- shape guesses ----
-// α = −1: the small-angle solution A = 3(φ0 + φ1) of Im∫e^{iφ} ≈ ∫φ = 0 [Bertolazzi–Frego 2015],
-// improved by one more term of the series: ∫φ − ∫φ³/6 = 0 (closed form in A, one Newton step).
-double clothoid_guess(double phi0, double delta) {
-  const double A = 3 * (2 * phi0 + delta);
-  return A;
-}
+// α = −1: the small-angle solution A = 3(φ0 + φ1) of Im∫e^{iφ} ≈ ∫φ = 0 [Bertolazzi–Frego 2015].
+double clothoid_guess(double phi0, double delta) { return 3 * (2 * phi0 + delta); }
 // α ≠ 0: the clothoid's guess moved to the law by matching the ratio of the end curvatures.
 double power_guess(double alpha, double phi0, double delta) {
   const double A = clothoid_guess(phi0, delta);

@@ -271,3 +271,41 @@ TEST(G1Hermite, BadInputNamesTheParameter) {
 
 }  // namespace
 }  // namespace lac
+
+namespace lac {
+namespace {
+
+// The scan behind the α > 1 refusal (docs/g1_hermite.md): for α > 0 and 0 < Δ ≤ π the end-point
+// direction β(x) = arg∫₀¹e^{iφ} of the shapes x = log(qb/qa) (turning Δ) increases with x, so the
+// chords reachable lie strictly between its limits x → ±∞. Default grid coarse; LAC_G1_FULL=1 fine.
+TEST(G1Hermite, EndDirectionIsMonotonicInTheShapeForPositiveAlpha) {
+  const bool fine = full();
+  const int n_delta = fine ? 60 : 8;
+  const double dx = fine ? 0.25 : 1.0;
+  long checked = 0;
+  for (double alpha : {0.1, 0.5, 1.0, 1.1, 1.5, 2.0, 3.0, 5.0}) {
+    const LaLaw law{alpha};
+    for (int j = 1; j <= n_delta; ++j) {
+      const double delta = kPi * j / n_delta;
+      double previous = -HUGE_VAL;
+      for (double x = -40; x <= 40; x += dx) {
+        const double qa = std::exp(-0.5 * x - 0.5 * std::abs(x)), qb = std::exp(0.5 * x - 0.5 * std::abs(x));
+        const double lambda = std::pow(law.divided_difference(qa, qb) / delta, alpha);
+        const detail::LinearQ seg{0, 1, lambda * qa, lambda * qb, 0};
+        ASSERT_NEAR(seg.turning(law), delta, 1e-9 * delta);
+        const std::complex<double> I = detail::integrate_tangent_reference(law, seg);
+        const double beta = std::arg(I);
+        // Non-decreasing to rounding (β saturates at 0 and Δ in double for small α and large |x|).
+        EXPECT_GE(beta, previous - 1e-12) << "alpha " << alpha << " delta " << delta << " x " << x;
+        EXPECT_GE(beta, -1e-12);
+        EXPECT_LE(beta, delta + 1e-12);
+        previous = beta;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+}  // namespace
+}  // namespace lac
