@@ -18,6 +18,8 @@ Report solve(const G1HermiteArgs& a) {
   if (a.points) {
     const auto p = parse_points(*a.points, 3, "points");
     const std::complex<double> a0{p[0][0], p[0][1]}, a1{p[1][0], p[1][1]}, a2{p[2][0], p[2][1]};
+    if (a1 == a0 || a1 == a2)
+      throw_input_error("lac", "points", "the tangent intersection a1 coincides with a0 or a2: no tangent direction there");
     return g1_hermite_report({a0, std::arg(a1 - a0), a2, std::arg(a2 - a1), alpha}, a, {a0, a1, a2});
   }
   if (!hermite) throw_input_error("lac", "points", "give --points \"a0 a1 a2\" or --p0/--theta0/--p1/--theta1");

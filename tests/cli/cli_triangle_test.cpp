@@ -1,5 +1,5 @@
-// lac g1 and lac compound: every --integrator and --solver of the registries, the JSON keys, the
-// statuses and bad names.
+// lac compound (and lac g1's control-triangle input): every --integrator and --solver of the
+// registries, the JSON keys, the statuses and bad names. lac g1's solvers: cli_g1_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,7 +43,9 @@ TEST(CliTriangle, JsonKeysAndSegmentsAgreeWithTheLibrary) {
                                            "iterations", "evaluations", "seconds",  "solver", "integrator",
                                            "residuals",  "segments",   "info"};
   const nlohmann::ordered_json g = run_json(kG1);
-  EXPECT_EQ(ordered_keys(g), common) << g.dump();
+  std::vector<std::string> g1_keys = common;
+  g1_keys.insert(g1_keys.end() - 1, "inflection");
+  EXPECT_EQ(ordered_keys(g), g1_keys) << g.dump();
   EXPECT_TRUE(g["message"].is_null());
   std::vector<std::string> with_points = common;
   with_points.push_back("points");
@@ -85,7 +87,7 @@ TEST(CliTriangle, EveryIntegratorAndSolverAgree) {
     solvers.emplace_back(m.name);
     for (const auto& alias : m.aliases) solvers.emplace_back(alias);
   }
-  for (const std::string& base : {kG1, kCompound}) {
+  for (const std::string& base : {kCompound}) {
     const nlohmann::ordered_json ref = run_json(base);
     ASSERT_EQ(ref["status"], "ok") << ref.dump();
     for (const MethodInfo& q : quadrature_methods()) {
@@ -129,7 +131,7 @@ TEST(CliTriangle, StatusesAndBadInput) {
   // Proven outside the drawable region: a status with its reason, exit 3 (no usable curve).
   const nlohmann::ordered_json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
   EXPECT_EQ(none["status"], "no_solution");
-  EXPECT_NE(none["message"].get<std::string>().find("drawable region"), std::string::npos) << none.dump();
+  EXPECT_NE(none["message"].get<std::string>().find("alpha > 1"), std::string::npos) << none.dump();
   for (const char* key : {"length", "kappa0", "kappa1"}) EXPECT_TRUE(none[key].is_null()) << key;
   EXPECT_TRUE(none["segments"].empty());
   EXPECT_FALSE(none.contains("points"));
@@ -143,7 +145,10 @@ TEST(CliTriangle, StatusesAndBadInput) {
   const test::CliRun option = test::run_lac(kG1 + " --tol 1e-10");  // an option without --integrator
   EXPECT_EQ(option.status, 2);
   EXPECT_NE(option.out.find("--integrator"), std::string::npos) << option.out;
-  const test::CliRun collinear = test::run_lac("g1 --points '0,0 1,0 2,0' --alpha 1");
+  const test::CliRun degenerate = test::run_lac("g1 --points '0,0 0,0 2,0' --alpha 1");
+  EXPECT_EQ(degenerate.status, 2);
+  EXPECT_NE(degenerate.out.find("points"), std::string::npos) << degenerate.out;
+  const test::CliRun collinear = test::run_lac("compound --points '0,0 1,0 2,0' --alpha0 1 --alpha1 2");
   EXPECT_EQ(collinear.status, 2);
   EXPECT_NE(collinear.out.find("turning"), std::string::npos) << collinear.out;
 }
