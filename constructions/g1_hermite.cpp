@@ -457,9 +457,12 @@ void check_problem(const G1HermiteProblem& pr) {
     throw_input_error("g1", "alpha", pr.alpha, "0 or 0.1 <= |alpha| <= 5");
   const double r = std::abs(pr.p1 - pr.p0);
   if (!std::isfinite(r)) throw_input_error("g1", "p1", "p1 - p0 beyond the double range (|p1 - p0| must be finite)");
-  const double scale = std::max({1.0, std::abs(pr.p0.real()), std::abs(pr.p0.imag()), std::abs(pr.p1.real()),
+  // The problem is similarity-invariant: the chord is compared with the coordinates' own size,
+  // so that a tiny configuration solves like its unit-size copy; subnormal chords are refused.
+  const double scale = std::max({std::abs(pr.p0.real()), std::abs(pr.p0.imag()), std::abs(pr.p1.real()),
                                  std::abs(pr.p1.imag())});
-  if (!(r > 1e-12 * scale)) throw_input_error("g1", "p1", "coincides with p0 (the chord must have positive length)");
+  if (!(r > 1e-12 * scale) || !(r >= std::numeric_limits<double>::min()))
+    throw_input_error("g1", "p1", "coincides with p0 (the chord must have positive length)");
 }
 
 // Builds the result curve from a solved shape; checks it in closed form (angles) and by the
