@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "lac/common/error.hpp"
@@ -98,7 +99,7 @@ std::vector<PointFrame> estimate_frames(std::span<const std::complex<double>> pt
       out[k] = end_frame(pts[0], pts[1], pts[2]);
     } else {  // the last point: the first of the reversed triple, angle turned back
       const PointFrame r = end_frame(pts[n - 1], pts[n - 2], pts[n - 3]);
-      out[k] = {r.theta + M_PI, -r.kappa};
+      out[k] = {r.theta + std::numbers::pi, -r.kappa};
     }
   }
   return out;
