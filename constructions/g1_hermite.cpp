@@ -515,6 +515,15 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     }
     sum.residuals.position = position;
     sum.residuals.angle = angle;
+    if (!std::isfinite(position) || !std::isfinite(info.length) || !std::isfinite(seg.kappa_start()) ||
+        !std::isfinite(seg.kappa_end())) {
+      // The shape is fine, but scaled to this chord its length, end curvatures or end point
+      // leave the double range (a chord near DBL_MIN or coordinates near DBL_MAX).
+      res.curve = PlanarCurve{};
+      res.conclude(Status::numerical_failure, "g1: the solution's length, end curvatures or end point (chord " +
+                                                  format_number(r) + ") are beyond the double range");
+      return;
+    }
     // Shape of the solution.
     if (t.qa == 0 && t.qb == 0) info.shape = G1Shape::straight;
     else if (std::abs(info.turning) >= kPi || nz.phi0 * (nz.phi0 + nz.delta) == 0) info.shape = G1Shape::other;
