@@ -38,6 +38,7 @@ Dual dual_pow(Dual a, double e) {  // a > 0
   const double p = std::pow(a.v, e);
   return {p, e * p / a.v * a.d};
 }
+Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
 
 // Gauss–Legendre rules on [0, 1] (Boost.Math's tables).
 template <int N>
@@ -153,6 +154,24 @@ void add(Integral& acc, Dual weight, Dual phi) {
 }
 int panels_for(double turning) {
   return std::clamp(static_cast<int>(std::ceil(std::abs(turning) / kPanelTurn)), 1, kMaxPanels);
+}
+// node(t, w) over `panels` equal N-node Gauss–Legendre panels of [t0, t1]; returns the node count.
+template <int N, class Node>
+long gauss_panels(double t0, double t1, int panels, Node&& node) {
+  const Rule<N>& g = rule<N>();
+  const double h = (t1 - t0) / panels;
+  for (int p = 0; p < panels; ++p)
+    for (int k = 0; k < N; ++k) node(t0 + (p + g.x[k]) * h, g.w[k] * h);
+  return static_cast<long>(N) * panels;
+}
+// The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on the panel, g entire in a
+// strip where |g''/g'| ≤ 2/(t1 − t0): 12, 16 or 20 nodes up to omega = 4, 8, 12, more panels beyond
+// (error ≲ 1e-14 relative to the piece, checked against a long-double reference in t = log r).
+template <class Node>
+long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
+  if (omega <= 4) return gauss_panels<12>(t0, t1, 1, node);
+  if (omega <= 8) return gauss_panels<16>(t0, t1, 1, node);
+  return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
 }
 
 // The normalized problem: φ0, Δ and the law; evaluate(x) gives f, f' and ∫e^{iφ}.
@@ -303,19 +322,6 @@ struct Normalized {
     // q(zero) = 0, from the end nearer to it.
     const Dual ustar = c.v != 0 ? (-qa) / (2.0 * c) : Dual{kNaN, 0};
     const double zero = ustar.v;
-    // Plain pieces: nodes in u over the cuts (their derivative is the integrand's).
-    auto plain = [&](const std::vector<double>& cuts, int sub) {
-      for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double lo = cuts[i], hgt = (cuts[i + 1] - cuts[i]) / sub;
-        for (int p = 0; p < sub; ++p)
-          for (int k = 0; k < kN; ++k) {
-            const double u = lo + (p + gl.x[k]) * hgt;
-            const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
-            add(r, Dual{gl.w[k] * hgt, 0}, phi0 + u * law.divided(qa, Fa, q));
-          }
-        evaluations += static_cast<long>(kN) * sub;
-      }
-    };
     // A graded piece from the zero u* of q to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
     // φ = φ0 + (F(q_e) t^(4p) − F(qa)) / (2c) (F(0) = 0 for α < 0), all in x's derivative.
     auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
@@ -339,7 +345,32 @@ struct Normalized {
       r.I += sign * (len.v * piece.I);
       r.dI += sign * (len.v * piece.dI + len.d * piece.I);
     };
-    const int sub = panels_for(delta);
+    // α > 0 with the zero u* of q outside [0, 1] by d < 1/2: κ is steep at the end next to it. With
+    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
+    // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
+    // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
+    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out.
+    auto steep = [&](bool near_start) {
+      const Dual two_c = 2.0 * c;
+      const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
+      const Dual qB = near_start ? qb : qa;
+      const double phiB = near_start ? phi0 + delta : phi0, p = law.p;
+      const Dual amp = (law.log_F ? Dual{1, 0} : dual_pow(qB.v < 0 ? -qB : qB, p)) / two_c;
+      const Dual w0 = dual_log((d.v > 1e-18 ? d : Dual{1e-18, 0}) / rB);
+      const int panels = std::max(1, static_cast<int>(std::ceil(-w0.v * std::abs(p))));
+      for (int i = 0; i < panels; ++i) {
+        // τ ∈ [0, 1] ↦ w = w0(1 − τ); this panel's τ ∈ [i, i + 1]/panels.
+        const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
+        const double slope = std::abs(amp.v) * std::max(std::exp(p * w0.v * (1 - ta)), std::exp(p * w0.v * (1 - tb)));
+        const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
+        evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+          const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
+          const double ew = std::exp(w.v), epw = law.log_F ? 1.0 : std::exp(p * w.v);
+          const Dual E = law.log_F ? w : Dual{std::expm1(p * w.v) / p, epw * w.d};
+          add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
+        });
+      }
+    };
     if (alpha < 0 && std::isfinite(zero) && zero > -0.5 && zero < 1.5) {
       if (zero > 0 && zero < 1) {
         graded(0.0, Fa, Dual{0, 0}, -1.0);
@@ -349,22 +380,13 @@ struct Normalized {
       } else {
         graded(0.0, Fa, dual_pow((ustar - 1.0) / ustar, 0.25), -1.0);
       }
-    } else if (alpha > 0 && std::isfinite(zero) && (zero > -0.5 && zero < 1.5)) {
-      // κ steep toward the end next to the zero of q: panels doubling in width from that end.
-      const bool near_start = zero <= 0;
-      const double d = near_start ? -zero : -qb.v / (2 * c.v);  // distance of the zero from the end
-      std::vector<double> from_end{0.0};
-      // Ratio 4: the zero at relative distance 1/3 of a panel's half-width keeps 20-node
-      // Gauss–Legendre at ~1e-16 (Bernstein ellipse ρ = 3); ≤ 540 panels down to d = 1e-300.
-      for (double x = std::max(d, 1e-300); x < 1.0; x *= 4) from_end.push_back(x);
-      from_end.push_back(1.0);
-      std::vector<double> cuts;
-      for (double x : from_end) cuts.push_back(near_start ? x : 1.0 - x);
-      std::sort(cuts.begin(), cuts.end());
-      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-      plain(cuts, sub);
-    } else {
-      plain({0.0, 1.0}, sub);
+    } else if (alpha > 0 && std::isfinite(zero) && zero > -0.5 && zero < 1.5) {
+      steep(zero <= 0);
+    } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's)
+      evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta), [&](double u, double wt) {
+        const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
+        add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
+      });
     }
     return true;
   }
