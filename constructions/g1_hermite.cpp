@@ -71,6 +71,7 @@ struct Power {
   bool log_F;
   explicit Power(double a) : alpha(a), b(-1.0 / a), p(1.0 - 1.0 / a), log_F(a == 1) {}
 
+  double K(double q) const { return std::copysign(std::pow(std::abs(q), b), q); }
   double F(double q) const {
     const double aq = std::abs(q);
     return log_F ? std::log(aq) : aq * std::pow(aq, b) / p;
@@ -318,34 +319,28 @@ struct Normalized {
     if (!(std::isfinite(qa.v) && std::isfinite(qb.v))) return false;
     if (alpha > 0 && !(qa.v * qb.v > 0)) return false;
     const Dual Fa = law.F(qa);
-    const Rule<kN>& gl = rule<kN>();
     // q(zero) = 0, from the end nearer to it.
     const Dual ustar = c.v != 0 ? (-qa) / (2.0 * c) : Dual{kNaN, 0};
     const double zero = ustar.v;
-    // A graded piece from the zero u* of q to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
+    // A graded piece from the zero u* of q (α < 0) to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
     // φ = φ0 + (F(q_e) t^(4p) − F(qa)) / (2c) (F(0) = 0 for α < 0), all in x's derivative.
     auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
       const Dual span = Dual{e, 0} - ustar;
-      const double turn = std::abs(Fe.v / (2 * c.v)) * (1 - std::pow(t0.v, 4 * law.p));
-      const int panels = panels_for(turn);
+      const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
       const std::vector<double>* powers = t0.v == 0 ? &graded_powers(4 * law.p, panels) : nullptr;
       Integral piece;
       const Dual len = 1.0 + (-t0);
-      const double hgt = 1.0 / panels;
-      for (int p = 0; p < panels; ++p)
-        for (int k = 0; k < kN; ++k) {
-          const double tau = (p + gl.x[k]) * hgt;
-          const Dual tt = t0 + tau * len;
-          const Dual tp = powers ? Dual{(*powers)[static_cast<size_t>(kN * p + k)], 0} : dual_pow(tt, 4 * law.p);
-          const Dual jac = 4.0 * (tt * tt * tt) * span;
-          add(piece, Dual{gl.w[k] * hgt, 0} * jac, phi0 + (Fe * tp - Fa) / (2.0 * c));
-        }
-      evaluations += static_cast<long>(kN) * panels;
+      size_t k = 0;
+      evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double tau, double wt) {
+        const Dual t = t0 + tau * len;
+        const Dual tp = powers ? Dual{(*powers)[k++], 0} : dual_pow(t, 4 * law.p);
+        add(piece, (wt * 4.0) * (t * t * t) * span, phi0 + (Fe * tp - Fa) / (2.0 * c));
+      });
       // × (1 − t0), the Jacobian of τ ↦ t.
       r.I += sign * (len.v * piece.I);
       r.dI += sign * (len.v * piece.dI + len.d * piece.I);
     };
-    // α > 0 with the zero u* of q outside [0, 1] by d < 1/2: κ is steep at the end next to it. With
+    // α > 0 with the zero u* of q outside [0, 1] by d < 2: κ is steep at the end next to it. With
     // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
     // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
     // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
@@ -371,7 +366,7 @@ struct Normalized {
         });
       }
     };
-    if (alpha < 0 && std::isfinite(zero) && zero > -0.5 && zero < 1.5) {
+    if (alpha < 0 && zero > -0.5 && zero < 1.5) {
       if (zero > 0 && zero < 1) {
         graded(0.0, Fa, Dual{0, 0}, -1.0);
         graded(1.0, law.F(qb), Dual{0, 0}, 1.0);
@@ -380,10 +375,11 @@ struct Normalized {
       } else {
         graded(0.0, Fa, dual_pow((ustar - 1.0) / ustar, 0.25), -1.0);
       }
-    } else if (alpha > 0 && std::isfinite(zero) && zero > -0.5 && zero < 1.5) {
+    } else if (alpha > 0 && zero > -2 && zero < 3) {
       steep(zero <= 0);
-    } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's)
-      evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta), [&](double u, double wt) {
+    } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
+      const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
+      evaluations += gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
         const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
         add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
       });
