@@ -122,8 +122,9 @@ struct Power {
   }
 };
 
-// t^(4p) at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection):
-// they depend on α and the panel count only, so they are computed once per thread.
+// t^e at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection, the
+// α > 1 limits): they depend on α and the panel count only, so they are computed once per thread.
+// The entry returned last is never the one replaced next, so two lookups in a row stay valid.
 const std::vector<double>& graded_powers(double e, int panels) {
   struct Entry {
     double e = kNaN;
@@ -132,8 +133,11 @@ const std::vector<double>& graded_powers(double e, int panels) {
   };
   thread_local std::array<Entry, 8> cache;
   thread_local size_t next = 0;
-  for (const Entry& c : cache)
-    if (c.e == e && c.panels == panels) return c.v;
+  for (size_t j = 0; j < cache.size(); ++j)
+    if (cache[j].e == e && cache[j].panels == panels) {
+      if (next % cache.size() == j) ++next;
+      return cache[j].v;
+    }
   Entry& c = cache[next++ % cache.size()];
   const Rule<kN>& g = rule<kN>();
   c.e = e;
@@ -235,20 +239,21 @@ struct Normalized {
   }
 
   // α = 0: κ = σ e^{q}, q = qa + bu; φ = φ0 + Δ E(u), E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for
-  // b > 0; a series in b near 0.
-  static Dual E(double u, Dual b) {
-    if (std::abs(b.v) < 1e-6) {
-      const double e1 = 0.5 * u * (u - 1), e2 = u * (u - 1) * (2 * u - 1) / 12;
-      return {u + b.v * e1 + b.v * b.v * e2, (e1 + 2 * b.v * e2) * b.d};
-    }
-    if (b.v > 0) return 1.0 + (-E(1 - u, -b));
-    const Dual num{std::expm1(b.v * u), std::exp(b.v * u) * u * b.d};
-    const Dual den{std::expm1(b.v), std::exp(b.v) * b.d};
-    return num / den;
-  }
+  // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
+  // node: the denominator expm1(−|b|) is per evaluation.
   bool exponential(double b, Integral& r, Trial& t) {
-    const Rule<kN>& g = rule<kN>();
-    const Dual B{b, 1};
+    const bool series = std::abs(b) < 1e-6, mirror = b > 0;
+    const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
+    const Dual den{em, (em + 1) * dbeta};
+    auto E = [&](double u) -> Dual {
+      if (series) {
+        const double e1 = 0.5 * u * (u - 1), e2 = u * (u - 1) * (2 * u - 1) / 12;
+        return {u + b * e1 + b * b * e2, e1 + 2 * b * e2};
+      }
+      const double v = mirror ? 1 - u : u, n = std::expm1(beta * v);
+      const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
+      return mirror ? 1.0 + (-e) : e;
+    };
     const int sub = panels_for(delta);
     // Where |b| is large the turning gathers within 1/|b| of the steep end: panels ending at
     // w, 4w, 16w, … from that end (w = 1/|b|).
@@ -264,15 +269,9 @@ struct Normalized {
     } else {
       cuts.push_back(1.0);
     }
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double a = cuts[i], h = (cuts[i + 1] - cuts[i]) / sub;
-      for (int p = 0; p < sub; ++p)
-        for (int k = 0; k < kN; ++k) {
-          const double u = a + (p + g.x[k]) * h;
-          add(r, Dual{g.w[k] * h, 0}, phi0 + delta * E(u, B));
-        }
-      evaluations += static_cast<long>(kN) * sub;
-    }
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
+                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
     // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
     const double lr = b == 0 ? 0.0
                       : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
@@ -391,15 +390,15 @@ struct Normalized {
 // ∫₀¹ e^{iΔv^p} dv (0 < p < 1): v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
 Complex power_limit_integral(double delta, double p, long& evaluations) {
   const double k = std::max(4.0, std::ceil(4 / p));
-  const Rule<kN>& g = rule<kN>();
   const int panels = panels_for(delta);
+  const std::vector<double>& jac = graded_powers(k - 1, panels);
+  const std::vector<double>& phase = graded_powers(k * p, panels);
   Complex sum;
-  for (int i = 0; i < panels; ++i)
-    for (int j = 0; j < kN; ++j) {
-      const double t = (i + g.x[j]) / panels;
-      sum += (g.w[j] / panels * k * std::pow(t, k - 1)) * std::polar(1.0, delta * std::pow(t, k * p));
-    }
-  evaluations += static_cast<long>(kN) * panels;
+  size_t i = 0;
+  evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {
+    sum += (wt * k * jac[i]) * std::polar(1.0, delta * phase[i]);
+    ++i;
+  });
   return sum;
 }
 
