@@ -359,8 +359,8 @@ struct Normalized {
         const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
         evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
           const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
-          const double ew = std::exp(w.v), epw = law.log_F ? 1.0 : std::exp(p * w.v);
-          const Dual E = law.log_F ? w : Dual{std::expm1(p * w.v) / p, epw * w.d};
+          const double ew = std::exp(w.v), em = law.log_F ? 0.0 : std::expm1(p * w.v);
+          const Dual E = law.log_F ? w : Dual{em / p, (em + 1) * w.d};
           add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
         });
       }
@@ -424,12 +424,13 @@ double power_guess(double alpha, double phi0, double delta) {
 double exponential_guess(double phi0, double delta) {
   const double mu = -phi0 / delta;
   if (!(mu > 0 && mu < 1)) return 0;
-  const auto M = [](double b) { return std::abs(b) < 1e-4 ? 0.5 - b / 12 : 1 / b - 1 / std::expm1(b); };
   double lo = -800, hi = 800, b = 12 * (0.5 - mu);
   for (int i = 0; i < 60; ++i) {
-    const double v = M(b) - mu;
+    const bool small = std::abs(b) < 1e-4;
+    const double em = small ? 0.0 : std::expm1(b);
+    const double v = (small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu;
     if (v > 0) lo = b; else hi = b;
-    const double dM = std::abs(b) < 1e-4 ? -1.0 / 12 : -1 / (b * b) + std::exp(b) / (std::expm1(b) * std::expm1(b));
+    const double dM = small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em);
     double next = b - v / dM;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (std::abs(next - b) <= 1e-12 * (1 + std::abs(b))) return next;
