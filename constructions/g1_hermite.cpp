@@ -328,12 +328,12 @@ struct Normalized {
       const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
       const std::vector<double>* powers = t0.v == 0 ? &graded_powers(4 * law.p, panels) : nullptr;
       Integral piece;
-      const Dual len = 1.0 + (-t0);
+      const Dual len = 1.0 + (-t0), inv = Dual{1, 0} / (2.0 * c), a0 = phi0 + (-Fa) * inv, a1 = Fe * inv, jac = 4.0 * span;
       size_t k = 0;
       evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double tau, double wt) {
         const Dual t = t0 + tau * len;
         const Dual tp = powers ? Dual{(*powers)[k++], 0} : dual_pow(t, 4 * law.p);
-        add(piece, (wt * 4.0) * (t * t * t) * span, phi0 + (Fe * tp - Fa) / (2.0 * c));
+        add(piece, wt * ((t * t * t) * jac), a0 + tp * a1);
       });
       // × (1 − t0), the Jacobian of τ ↦ t.
       r.I += sign * (len.v * piece.I);
