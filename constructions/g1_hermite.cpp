@@ -717,7 +717,9 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   } else if (pr.alpha > 0) {
     xmin = -700;
     xmax = 700;
-    x0 = std::clamp(-pr.alpha * exponential_guess(nz.phi0, nz.delta), -30.0, 30.0);  // log(qb/qa) = −α log(κb/κa)
+    // log(qb/qa) = −α log(κb/κa); the small-angle b0 beyond |b| = 12 (turning gathered within 1/12
+    // of an end) lands in the flat tail of f, where Newton creeps (α = 0.5: up to 15 steps).
+    x0 = -pr.alpha * std::clamp(exponential_guess(nz.phi0, nz.delta), -12.0, 12.0);
     step = 1;
     if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
       // The shapes run from κ = ∞ at the start (x → ∞, φ = φ0 + Δu^p) to κ = ∞ at the end; their
