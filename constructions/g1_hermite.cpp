@@ -38,6 +38,7 @@ Dual dual_pow(Dual a, double e) {  // a > 0
   const double p = std::pow(a.v, e);
   return {p, e * p / a.v * a.d};
 }
+Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
 
 // Gauss–Legendre rules on [0, 1] (Boost.Math's tables).
 template <int N>
@@ -70,6 +71,7 @@ struct Power {
   bool log_F;
   explicit Power(double a) : alpha(a), b(-1.0 / a), p(1.0 - 1.0 / a), log_F(a == 1) {}
 
+  double K(double q) const { return std::copysign(std::pow(std::abs(q), b), q); }
   double F(double q) const {
     const double aq = std::abs(q);
     return log_F ? std::log(aq) : aq * std::pow(aq, b) / p;
@@ -120,8 +122,9 @@ struct Power {
   }
 };
 
-// t^(4p) at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection):
-// they depend on α and the panel count only, so they are computed once per thread.
+// t^e at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection, the
+// α > 1 limits): they depend on α and the panel count only, so they are computed once per thread.
+// The entry returned last is never the one replaced next, so two lookups in a row stay valid.
 const std::vector<double>& graded_powers(double e, int panels) {
   struct Entry {
     double e = kNaN;
@@ -130,8 +133,11 @@ const std::vector<double>& graded_powers(double e, int panels) {
   };
   thread_local std::array<Entry, 8> cache;
   thread_local size_t next = 0;
-  for (const Entry& c : cache)
-    if (c.e == e && c.panels == panels) return c.v;
+  for (size_t j = 0; j < cache.size(); ++j)
+    if (cache[j].e == e && cache[j].panels == panels) {
+      if (next % cache.size() == j) ++next;
+      return cache[j].v;
+    }
   Entry& c = cache[next++ % cache.size()];
   const Rule<kN>& g = rule<kN>();
   c.e = e;
@@ -153,6 +159,24 @@ void add(Integral& acc, Dual weight, Dual phi) {
 }
 int panels_for(double turning) {
   return std::clamp(static_cast<int>(std::ceil(std::abs(turning) / kPanelTurn)), 1, kMaxPanels);
+}
+// node(t, w) over `panels` equal N-node Gauss–Legendre panels of [t0, t1]; returns the node count.
+template <int N, class Node>
+long gauss_panels(double t0, double t1, int panels, Node&& node) {
+  const Rule<N>& g = rule<N>();
+  const double h = (t1 - t0) / panels;
+  for (int p = 0; p < panels; ++p)
+    for (int k = 0; k < N; ++k) node(t0 + (p + g.x[k]) * h, g.w[k] * h);
+  return static_cast<long>(N) * panels;
+}
+// The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on the panel, g entire in a
+// strip where |g''/g'| ≤ 2/(t1 − t0): 12, 16 or 20 nodes up to omega = 4, 8, 12, more panels beyond
+// (error ≲ 1e-14 relative to the piece, checked against a long-double reference in t = log r).
+template <class Node>
+long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
+  if (omega <= 4) return gauss_panels<12>(t0, t1, 1, node);
+  if (omega <= 8) return gauss_panels<16>(t0, t1, 1, node);
+  return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
 }
 
 // The normalized problem: φ0, Δ and the law; evaluate(x) gives f, f' and ∫e^{iφ}.
@@ -215,20 +239,21 @@ struct Normalized {
   }
 
   // α = 0: κ = σ e^{q}, q = qa + bu; φ = φ0 + Δ E(u), E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for
-  // b > 0; a series in b near 0.
-  static Dual E(double u, Dual b) {
-    if (std::abs(b.v) < 1e-6) {
-      const double e1 = 0.5 * u * (u - 1), e2 = u * (u - 1) * (2 * u - 1) / 12;
-      return {u + b.v * e1 + b.v * b.v * e2, (e1 + 2 * b.v * e2) * b.d};
-    }
-    if (b.v > 0) return 1.0 + (-E(1 - u, -b));
-    const Dual num{std::expm1(b.v * u), std::exp(b.v * u) * u * b.d};
-    const Dual den{std::expm1(b.v), std::exp(b.v) * b.d};
-    return num / den;
-  }
+  // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
+  // node: the denominator expm1(−|b|) is per evaluation.
   bool exponential(double b, Integral& r, Trial& t) {
-    const Rule<kN>& g = rule<kN>();
-    const Dual B{b, 1};
+    const bool series = std::abs(b) < 1e-6, mirror = b > 0;
+    const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
+    const Dual den{em, (em + 1) * dbeta};
+    auto E = [&](double u) -> Dual {
+      if (series) {
+        const double e1 = 0.5 * u * (u - 1), e2 = u * (u - 1) * (2 * u - 1) / 12;
+        return {u + b * e1 + b * b * e2, e1 + 2 * b * e2};
+      }
+      const double v = mirror ? 1 - u : u, n = std::expm1(beta * v);
+      const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
+      return mirror ? 1.0 + (-e) : e;
+    };
     const int sub = panels_for(delta);
     // Where |b| is large the turning gathers within 1/|b| of the steep end: panels ending at
     // w, 4w, 16w, … from that end (w = 1/|b|).
@@ -244,15 +269,9 @@ struct Normalized {
     } else {
       cuts.push_back(1.0);
     }
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double a = cuts[i], h = (cuts[i + 1] - cuts[i]) / sub;
-      for (int p = 0; p < sub; ++p)
-        for (int k = 0; k < kN; ++k) {
-          const double u = a + (p + g.x[k]) * h;
-          add(r, Dual{g.w[k] * h, 0}, phi0 + delta * E(u, B));
-        }
-      evaluations += static_cast<long>(kN) * sub;
-    }
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
+                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
     // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
     const double lr = b == 0 ? 0.0
                       : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
@@ -299,48 +318,54 @@ struct Normalized {
     if (!(std::isfinite(qa.v) && std::isfinite(qb.v))) return false;
     if (alpha > 0 && !(qa.v * qb.v > 0)) return false;
     const Dual Fa = law.F(qa);
-    const Rule<kN>& gl = rule<kN>();
     // q(zero) = 0, from the end nearer to it.
     const Dual ustar = c.v != 0 ? (-qa) / (2.0 * c) : Dual{kNaN, 0};
     const double zero = ustar.v;
-    // Plain pieces: nodes in u over the cuts (their derivative is the integrand's).
-    auto plain = [&](const std::vector<double>& cuts, int sub) {
-      for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const double lo = cuts[i], hgt = (cuts[i + 1] - cuts[i]) / sub;
-        for (int p = 0; p < sub; ++p)
-          for (int k = 0; k < kN; ++k) {
-            const double u = lo + (p + gl.x[k]) * hgt;
-            const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
-            add(r, Dual{gl.w[k] * hgt, 0}, phi0 + u * law.divided(qa, Fa, q));
-          }
-        evaluations += static_cast<long>(kN) * sub;
-      }
-    };
-    // A graded piece from the zero u* of q to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
+    // A graded piece from the zero u* of q (α < 0) to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
     // φ = φ0 + (F(q_e) t^(4p) − F(qa)) / (2c) (F(0) = 0 for α < 0), all in x's derivative.
     auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
       const Dual span = Dual{e, 0} - ustar;
-      const double turn = std::abs(Fe.v / (2 * c.v)) * (1 - std::pow(t0.v, 4 * law.p));
-      const int panels = panels_for(turn);
+      const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
       const std::vector<double>* powers = t0.v == 0 ? &graded_powers(4 * law.p, panels) : nullptr;
       Integral piece;
-      const Dual len = 1.0 + (-t0);
-      const double hgt = 1.0 / panels;
-      for (int p = 0; p < panels; ++p)
-        for (int k = 0; k < kN; ++k) {
-          const double tau = (p + gl.x[k]) * hgt;
-          const Dual tt = t0 + tau * len;
-          const Dual tp = powers ? Dual{(*powers)[static_cast<size_t>(kN * p + k)], 0} : dual_pow(tt, 4 * law.p);
-          const Dual jac = 4.0 * (tt * tt * tt) * span;
-          add(piece, Dual{gl.w[k] * hgt, 0} * jac, phi0 + (Fe * tp - Fa) / (2.0 * c));
-        }
-      evaluations += static_cast<long>(kN) * panels;
+      const Dual len = 1.0 + (-t0), inv = Dual{1, 0} / (2.0 * c), a0 = phi0 + (-Fa) * inv, a1 = Fe * inv, jac = 4.0 * span;
+      size_t k = 0;
+      evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double tau, double wt) {
+        const Dual t = t0 + tau * len;
+        const Dual tp = powers ? Dual{(*powers)[k++], 0} : dual_pow(t, 4 * law.p);
+        add(piece, wt * ((t * t * t) * jac), a0 + tp * a1);
+      });
       // × (1 − t0), the Jacobian of τ ↦ t.
       r.I += sign * (len.v * piece.I);
       r.dI += sign * (len.v * piece.dI + len.d * piece.I);
     };
-    const int sub = panels_for(delta);
-    if (alpha < 0 && std::isfinite(zero) && zero > -0.5 && zero < 1.5) {
+    // α > 0 with the zero u* of q outside [0, 1] by d < 2: κ is steep at the end next to it. With
+    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
+    // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
+    // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
+    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out.
+    auto steep = [&](bool near_start) {
+      const Dual two_c = 2.0 * c;
+      const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
+      const Dual qB = near_start ? qb : qa;
+      const double phiB = near_start ? phi0 + delta : phi0, p = law.p;
+      const Dual amp = (law.log_F ? Dual{1, 0} : dual_pow(qB.v < 0 ? -qB : qB, p)) / two_c;
+      const Dual w0 = dual_log((d.v > 1e-18 ? d : Dual{1e-18, 0}) / rB);
+      const int panels = std::max(1, static_cast<int>(std::ceil(-w0.v * std::abs(p))));
+      for (int i = 0; i < panels; ++i) {
+        // τ ∈ [0, 1] ↦ w = w0(1 − τ); this panel's τ ∈ [i, i + 1]/panels.
+        const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
+        const double slope = std::abs(amp.v) * std::max(std::exp(p * w0.v * (1 - ta)), std::exp(p * w0.v * (1 - tb)));
+        const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
+        evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+          const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
+          const double ew = std::exp(w.v), em = law.log_F ? 0.0 : std::expm1(p * w.v);
+          const Dual E = law.log_F ? w : Dual{em / p, (em + 1) * w.d};
+          add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
+        });
+      }
+    };
+    if (alpha < 0 && zero > -0.5 && zero < 1.5) {
       if (zero > 0 && zero < 1) {
         graded(0.0, Fa, Dual{0, 0}, -1.0);
         graded(1.0, law.F(qb), Dual{0, 0}, 1.0);
@@ -349,22 +374,14 @@ struct Normalized {
       } else {
         graded(0.0, Fa, dual_pow((ustar - 1.0) / ustar, 0.25), -1.0);
       }
-    } else if (alpha > 0 && std::isfinite(zero) && (zero > -0.5 && zero < 1.5)) {
-      // κ steep toward the end next to the zero of q: panels doubling in width from that end.
-      const bool near_start = zero <= 0;
-      const double d = near_start ? -zero : -qb.v / (2 * c.v);  // distance of the zero from the end
-      std::vector<double> from_end{0.0};
-      // Ratio 4: the zero at relative distance 1/3 of a panel's half-width keeps 20-node
-      // Gauss–Legendre at ~1e-16 (Bernstein ellipse ρ = 3); ≤ 540 panels down to d = 1e-300.
-      for (double x = std::max(d, 1e-300); x < 1.0; x *= 4) from_end.push_back(x);
-      from_end.push_back(1.0);
-      std::vector<double> cuts;
-      for (double x : from_end) cuts.push_back(near_start ? x : 1.0 - x);
-      std::sort(cuts.begin(), cuts.end());
-      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-      plain(cuts, sub);
-    } else {
-      plain({0.0, 1.0}, sub);
+    } else if (alpha > 0 && zero > -2 && zero < 3) {
+      steep(zero <= 0);
+    } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
+      const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
+      evaluations += gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
+        const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
+        add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
+      });
     }
     return true;
   }
@@ -373,15 +390,15 @@ struct Normalized {
 // ∫₀¹ e^{iΔv^p} dv (0 < p < 1): v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
 Complex power_limit_integral(double delta, double p, long& evaluations) {
   const double k = std::max(4.0, std::ceil(4 / p));
-  const Rule<kN>& g = rule<kN>();
   const int panels = panels_for(delta);
+  const std::vector<double>& jac = graded_powers(k - 1, panels);
+  const std::vector<double>& phase = graded_powers(k * p, panels);
   Complex sum;
-  for (int i = 0; i < panels; ++i)
-    for (int j = 0; j < kN; ++j) {
-      const double t = (i + g.x[j]) / panels;
-      sum += (g.w[j] / panels * k * std::pow(t, k - 1)) * std::polar(1.0, delta * std::pow(t, k * p));
-    }
-  evaluations += static_cast<long>(kN) * panels;
+  size_t i = 0;
+  evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {
+    sum += (wt * k * jac[i]) * std::polar(1.0, delta * phase[i]);
+    ++i;
+  });
   return sum;
 }
 
@@ -407,12 +424,13 @@ double power_guess(double alpha, double phi0, double delta) {
 double exponential_guess(double phi0, double delta) {
   const double mu = -phi0 / delta;
   if (!(mu > 0 && mu < 1)) return 0;
-  const auto M = [](double b) { return std::abs(b) < 1e-4 ? 0.5 - b / 12 : 1 / b - 1 / std::expm1(b); };
   double lo = -800, hi = 800, b = 12 * (0.5 - mu);
   for (int i = 0; i < 60; ++i) {
-    const double v = M(b) - mu;
+    const bool small = std::abs(b) < 1e-4;
+    const double em = small ? 0.0 : std::expm1(b);
+    const double v = (small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu;
     if (v > 0) lo = b; else hi = b;
-    const double dM = std::abs(b) < 1e-4 ? -1.0 / 12 : -1 / (b * b) + std::exp(b) / (std::expm1(b) * std::expm1(b));
+    const double dM = small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em);
     double next = b - v / dM;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (std::abs(next - b) <= 1e-12 * (1 + std::abs(b))) return next;
@@ -708,7 +726,9 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   } else if (pr.alpha > 0) {
     xmin = -700;
     xmax = 700;
-    x0 = std::clamp(-pr.alpha * exponential_guess(nz.phi0, nz.delta), -30.0, 30.0);  // log(qb/qa) = −α log(κb/κa)
+    // log(qb/qa) = −α log(κb/κa); the small-angle b0 beyond |b| = 12 (turning gathered within 1/12
+    // of an end) lands in the flat tail of f, where Newton creeps (α = 0.5: up to 15 steps).
+    x0 = -pr.alpha * std::clamp(exponential_guess(nz.phi0, nz.delta), -12.0, 12.0);
     step = 1;
     if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
       // The shapes run from κ = ∞ at the start (x → ∞, φ = φ0 + Δu^p) to κ = ∞ at the end; their
