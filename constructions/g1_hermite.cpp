@@ -169,9 +169,9 @@ long gauss_panels(double t0, double t1, int panels, Node&& node) {
     for (int k = 0; k < N; ++k) node(t0 + (p + g.x[k]) * h, g.w[k] * h);
   return static_cast<long>(N) * panels;
 }
-// The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on the panel, g entire in a
-// strip where |g''/g'| ≤ 2/(t1 − t0): 12, 16 or 20 nodes up to omega = 4, 8, 12, more panels beyond
-// (error ≲ 1e-14 relative to the piece, checked against a long-double reference in t = log r).
+// The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on [t0, t1]: 12, 16 or 20 nodes
+// up to omega = 4, 8, 12, more 20-node panels beyond (error ≲ 1e-14 of the piece for the two kernels
+// that use it, checked against a long-double reference; docs/g1_hermite.md).
 template <class Node>
 long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
   if (omega <= 4) return gauss_panels<12>(t0, t1, 1, node);
@@ -343,7 +343,7 @@ struct Normalized {
     // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
     // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
     // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
-    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out.
+    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out, so ≤ ⌈42|p|⌉ panels.
     auto steep = [&](bool near_start) {
       const Dual two_c = 2.0 * c;
       const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
