@@ -1,7 +1,7 @@
 // Batch mode of `lac` (docs/cli.md "Batch mode"): the cost of the command line around the solves.
-// 10 000 G1 problems `lac g1 --points "a0 a1 a2" --alpha A` [Yoshida–Saito 2009], generated
-// deterministically (seed 1), timed three ways, each run R times alternating:
-//   (a) in process: solve_g1 and the same output module (cli/report.hpp) as the command, one
+// 10 000 G1 problems `lac g1 --points "a0 a1 a2" --alpha A` (control triangles as G1 Hermite data),
+// generated deterministically (seed 1), timed three ways, each run R times alternating:
+//   (a) in process: solve_g1_hermite and the same output module (cli/report.hpp) as the command, one
 //       compact JSON line per problem, written in 64 KiB blocks to stdout (/dev/null);
 //   (b) lac::cli::run("lac g1 --batch FILE") in this process, stdout to /dev/null;
 //   (c) the lac executable of this build folder as a subprocess, stdout to /dev/null.
@@ -23,7 +23,8 @@
 #include <vector>
 
 #include "cli/command.hpp"
-#include "cli/triangle_args.hpp"
+#include "cli/g1_hermite_args.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 
 namespace {
 
@@ -32,13 +33,14 @@ struct Problem {
   double alpha;
 };
 
-/// Triangles a0 = 0, a1 = (x, 0), a2 = (1, y) and α in [-2, 2]: most drawable, some not.
+/// Triangles a0 = 0, a1 = (x, 0), a2 = (1, y) and α in [-2, 2] outside (−0.1, 0.1): most with a curve, some not.
 std::vector<Problem> problems(int n) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> x(0.3, 0.7), y(0.1, 0.6), alpha(-2, 2);
   std::vector<Problem> v(n);
   for (Problem& p : v) {
-    const double a1 = x(rng), a2 = y(rng), al = alpha(rng);
+    const double a1 = x(rng), a2 = y(rng), drawn = alpha(rng);
+    const double al = std::abs(drawn) < 0.1 ? drawn + std::copysign(0.1, drawn) : drawn;  // the G1 solver's α range
     p = {{{0, 0}, {a1, 0}, {1, a2}}, al};
   }
   return v;
@@ -63,12 +65,12 @@ double seconds_of(const auto& f) {
 
 /// (a): the library and the report module, no command line.
 void in_process(const std::vector<Problem>& ps) {
-  lac::cli::TriangleArgs args;
+  lac::cli::G1HermiteArgs args;
   std::string text;
   long row = 0;
   for (const Problem& p : ps) {
-    const lac::cli::PreparedTriangle prepared{p.t, {}, false};
-    const lac::cli::Report r = lac::cli::triangle_report(lac::solve_g1(p.t, p.alpha, prepared.options), args, prepared);
+    const lac::G1HermiteProblem problem{p.t.a0, std::arg(p.t.a1 - p.t.a0), p.t.a2, std::arg(p.t.a2 - p.t.a1), p.alpha};
+    const lac::cli::Report r = lac::cli::g1_hermite_report(problem, args, {p.t.a0, p.t.a1, p.t.a2});
     text.append("{\"row\":").append(std::to_string(++row)).append(",").append(r.json.dump(), 1).append("\n");
     if (text.size() > (1 << 16)) std::cout << text, text.clear();
   }

@@ -17,6 +17,7 @@
 //      usable (and no batch row was invalid).
 //   1  an internal error (an unexpected exception): a bug.
 #include <CLI/CLI.hpp>
+#include <complex>
 #include <functional>
 #include <memory>
 #include <string>
@@ -78,5 +79,9 @@ std::string* add_format_option(CLI::App& sub);
 std::vector<double> parse_tuple(const std::string& text, size_t expected, const std::string& parameter);
 /// Parses a point list "x0,y0 x1,y1 ..." of 2-D points.
 std::vector<std::vector<double>> parse_points(const std::string& text, size_t expected_points, const std::string& parameter);
+/// Parses a point list "x0,y0 x1,y1 ..." of any length.
+std::vector<std::complex<double>> parse_point_list(const std::string& text, const std::string& parameter);
+/// Parses a list of numbers "v0 v1 ..." (spaces or commas between them).
+std::vector<double> parse_number_list(const std::string& text, const std::string& parameter);
 
 }  // namespace lac::cli

@@ -68,6 +68,27 @@ std::vector<std::vector<double>> parse_points(const std::string& text, size_t ex
   return pts;
 }
 
+std::vector<std::complex<double>> parse_point_list(const std::string& text, const std::string& parameter) {
+  std::vector<std::complex<double>> pts;
+  std::stringstream ss(text);
+  std::string item;
+  while (ss >> item) {
+    const std::vector<double> xy = parse_tuple(item, 2, parameter);
+    pts.emplace_back(xy[0], xy[1]);
+  }
+  return pts;
+}
+
+std::vector<double> parse_number_list(const std::string& text, const std::string& parameter) {
+  std::string spaced = text;
+  for (char& c : spaced) c = c == ',' ? ' ' : c;
+  std::vector<double> out;
+  std::stringstream ss(spaced);
+  std::string item;
+  while (ss >> item) out.push_back(parse_tuple(item, 1, parameter)[0]);
+  return out;
+}
+
 namespace {
 
 /// Whether the running subcommand printed a result that is not usable (reset by run()).

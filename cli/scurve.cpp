@@ -1,64 +1,29 @@
-// lac scurve: S-shaped (or C-shaped) LA curve from four control points, α < 0
-// [Miura et al. 2013] §2.4–2.5.
+// lac scurve: one LA segment from four control points, tangent P0→P1 at P0 and P2→P3 at P3
+// ([Miura et al. 2013] §2.4–2.5's input): the G1 Hermite problem of constructions/g1_hermite.hpp;
+// [Miura et al. 2013]'s Λ search is --solver s-curve.
+#include <cmath>
+
 #include "cli/batch.hpp"
-#include "cli/options.hpp"
-#include "cli/quadrature_args.hpp"
-#include "lac/constructions/s_curve.hpp"
+#include "cli/g1_hermite_args.hpp"
 
 namespace lac::cli {
 namespace {
 
-struct SCurveArgs {
-  CommonArgs common;
-  std::optional<std::string> points;
-  double alpha = -1;
-  std::string solver = "toms748";
-  QuadratureArgs quadrature{.integrator = "gauss-legendre"};
-};
-
-Report solve(const SCurveArgs& a) {
+Report solve(const G1HermiteArgs& a) {
   const auto p = parse_points(need(a.points, "points"), 4, "points");
-  std::array<std::complex<double>, 4> P;
-  for (size_t k = 0; k < 4; ++k) P[k] = {p[k][0], p[k][1]};
-  SCurveOptions o;
-  o.solver = parse_root_method(a.solver);
-  o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
-  const int n = sample_count(a.common);
-  const SCurveResult res = solve_s_curve(P, a.alpha, o);
-  Report r{construction_report(res.summary), {P.begin(), P.end()}};
-  Json& j = r.json;
-  j["integrator"] = describe(o.integrator);
-  if (res.usable()) add_planar_curve(j, res.curve);
-  Json inflection = {{"s", nullptr}, {"x", nullptr}, {"y", nullptr}};
-  if (res.usable() && res.info.inflection_s) {
-    const PositionResult q = position_at(res.curve, *res.info.inflection_s);
-    inflection = {{"s", number(*res.info.inflection_s)},
-                  {"x", usable(q.status) ? number(q.point.position.real()) : Json(nullptr)},
-                  {"y", usable(q.status) ? number(q.point.position.imag()) : Json(nullptr)}};
-  }
-  j["inflection"] = std::move(inflection);
-  j["info"] = {{"shape", std::string(to_string(res.info.shape))},
-               {"lambda", res.usable() ? number(res.info.lambda) : Json(nullptr)},
-               {"mirrored", res.info.mirrored},
-               {"reversed", res.info.reversed},
-               {"constructions", res.summary.constructions},
-               {"error_estimate", number(res.summary.error_estimate)}};
-  if (res.usable()) add_planar_points(j, res.curve, n, o.integrator);
-  return r;
+  std::vector<std::complex<double>> P;
+  for (const auto& q : p) P.emplace_back(q[0], q[1]);
+  return g1_hermite_report({P[0], std::arg(P[1] - P[0]), P[3], std::arg(P[3] - P[2]), need(a.alpha, "alpha")}, a, P);
 }
 
 void setup(CLI::App& app) {
-  auto* a = owned<SCurveArgs>();
-  auto* sub = app.add_subcommand("scurve", "S-shaped LA curve from four control points and alpha < 0 "
-                                           "[Miura et al. 2013] sections 2.4-2.5");
+  auto* a = owned<G1HermiteArgs>();
+  a->alpha = -1;
+  auto* sub = app.add_subcommand("scurve", "One LA segment (S-shaped or not) from four control points: start tangent "
+                                           "P0->P1, end tangent P2->P3 [Miura et al. 2013] sections 2.4-2.5");
   sub->add_option("--points", a->points,
                   "Control points \"x0,y0 x1,y1 x2,y2 x3,y3\": start tangent P0->P1, end tangent P2->P3 (required)");
-  sub->add_option("--alpha", a->alpha, "Slope of the LCG, [-5, 0)")->capture_default_str();
-  sub->add_option("--solver", a->solver,
-                  "Root finder on Lambda: " + solver_names(root_methods()) + " ([Miura et al. 2013]: bisection)")
-      ->capture_default_str();
-  add_quadrature_options(*sub, a->quadrature);
-  add_common_options(*sub, a->common, true);
+  add_g1_hermite_options(*sub, *a);
   set_solver(*sub, *a, solve);
 }
 

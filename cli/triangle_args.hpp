@@ -1,6 +1,7 @@
 #pragma once
-// Options and report shared by `lac g1` and `lac compound` (cli/triangle_report.cpp): the
-// control-triangle constructions of [Yoshida–Saito 2009].
+// Options and report of `lac compound` (cli/triangle_report.cpp), the compound-rhythm control-
+// triangle construction of [Yoshida–Saito 2009]. (`lac g1` takes a control triangle as G1
+// Hermite data: cli/g1_hermite_args.hpp.)
 #include <optional>
 #include <string>
 

@@ -9,7 +9,7 @@
 #   default      10^6 executions per target (-runs=1000000), at most 3 h each, libFuzzer fork mode
 #                (a crash does not end the run), random seed, corpus kept in build-fuzz/fuzz-corpus/
 #   --short      the test / CI run: deterministic and bounded. Per target about 60 s of executions at
-#                the measured rate (short_runs below), at most 120 s each (so at most 14 min for the 7
+#                the measured rate (short_runs below), at most 120 s each (so at most 16 min for the 8
 #                targets plus replays), in-process (no fork), -seed=1, a fresh corpus from the
 #                committed seeds (fuzz/corpus/<target>/, and the saved finding inputs
 #                fuzz/findings/fuzz_<target>/ as a regression corpus)
@@ -32,6 +32,7 @@ cd "$(dirname "$0")/.."
 short_runs() {
   case "$1" in
     cli) echo 25000 ;;              # ~360/s
+    g1_hermite) echo 18000 ;;       # ~275/s over a whole run (G2 chains cost most)
     hermite) echo 6000 ;;           # ~85/s
     la_curve) echo 12000 ;;         # ~170/s over a whole run (budget-bound inputs take ~0.3 s)
     planar_segments) echo 25000 ;;  # ~370/s

@@ -47,9 +47,12 @@ const std::vector<Command> kCommands = {
     {"g2", kG2 + "--alpha -0.5", kG2 + "--alpha 9", "alpha",
      // κ changes sign with α ≥ 0: no_solution
      "g2 --p0 0,0 --theta0 0.3 --kappa0 1 --p1 1,0 --theta1 0.3 --kappa1 -1 --alpha 1"},
-    {"scurve", "scurve --points '0,0 1,0 2,1 3,1' --alpha -1", "scurve --points '0,0 1,0 2,1 3,1' --alpha 1.5", "alpha",
-     // C-shaped; the end direction is short of the chord up to κ = 0: no_solution
-     "scurve --points '0,0 1,0 1.9,0.1 2,1' --alpha -2"},
+    {"scurve", "scurve --points '0,0 1,0 2,1 3,1' --alpha -1", "scurve --points '0,0 1,0 2,1 3,1' --alpha 7", "alpha",
+     // S-shaped (zero turning) with α ≥ 0: κ cannot change sign, no_solution
+     "scurve --points '0,0 1,0.5 2,0.5 3,1' --alpha 1.5"},
+    {"chain", "chain --points '0,0 1,1 2,0 3,1' --alpha -1", "chain --points '0,0 1,1 2,0 3,1' --alpha 9", "alpha",
+     // the second pair needs an inflection, α ≥ 0: no_solution
+     "chain --points '0,0 1,0 2,0' --thetas '0.2 -0.2 -0.4' --alpha 1"},
     {"space", "space " + kSpaceEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1",
      "space " + kSpaceEnds + "--alpha 0 --beta 0 --omega 0.1 --type 3", "type",
      // the end tangent turns back, alpha < 0 ends early: not_converged

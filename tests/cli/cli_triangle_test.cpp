@@ -1,5 +1,5 @@
-// lac g1 and lac compound: every --integrator and --solver of the registries, the JSON keys, the
-// statuses and bad names.
+// lac compound (and lac g1's control-triangle input): every --integrator and --solver of the
+// registries, the JSON keys, the statuses and bad names. lac g1's solvers: cli_g1_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,17 +18,6 @@ namespace {
 const std::string kG1 = "g1 --points '0,0 1,0 2,1' --alpha -1";
 const std::string kCompound = "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3";  // swapped, mirrored
 
-nlohmann::ordered_json run_json(const std::string& args, int exit_status = 0) {
-  const test::CliRun run = test::run_lac(args);
-  EXPECT_EQ(run.status, exit_status) << args << "\n" << run.out;
-  try {
-    return nlohmann::ordered_json::parse(run.out);
-  } catch (const nlohmann::json::exception& e) {
-    ADD_FAILURE() << args << ": not JSON (" << e.what() << ")\n" << run.out;
-    return {};
-  }
-}
-
 /// The keys in the printed order (parsed as ordered_json).
 std::vector<std::string> ordered_keys(const nlohmann::ordered_json& j) {
   std::vector<std::string> out;
@@ -42,12 +31,14 @@ TEST(CliTriangle, JsonKeysAndSegmentsAgreeWithTheLibrary) {
   const std::vector<std::string> common = {"status",     "message",    "length",    "kappa0", "kappa1",
                                            "iterations", "evaluations", "seconds",  "solver", "integrator",
                                            "residuals",  "segments",   "info"};
-  const nlohmann::ordered_json g = run_json(kG1);
-  EXPECT_EQ(ordered_keys(g), common) << g.dump();
+  const nlohmann::ordered_json g = test::run_lac_json(kG1);
+  std::vector<std::string> g1_keys = common;
+  g1_keys.insert(g1_keys.end() - 1, "inflection");
+  EXPECT_EQ(ordered_keys(g), g1_keys) << g.dump();
   EXPECT_TRUE(g["message"].is_null());
   std::vector<std::string> with_points = common;
   with_points.push_back("points");
-  const nlohmann::ordered_json c = run_json(kCompound + " --samples 9");
+  const nlohmann::ordered_json c = test::run_lac_json(kCompound + " --samples 9");
   EXPECT_EQ(ordered_keys(c), with_points) << c.dump();
   EXPECT_EQ(c["info"]["segment0_at_a0"], false);
   EXPECT_LT(c["info"]["turning"].get<double>(), 0);  // signed: a right turn
@@ -85,13 +76,13 @@ TEST(CliTriangle, EveryIntegratorAndSolverAgree) {
     solvers.emplace_back(m.name);
     for (const auto& alias : m.aliases) solvers.emplace_back(alias);
   }
-  for (const std::string& base : {kG1, kCompound}) {
-    const nlohmann::ordered_json ref = run_json(base);
+  for (const std::string& base : {kCompound}) {
+    const nlohmann::ordered_json ref = test::run_lac_json(base);
     ASSERT_EQ(ref["status"], "ok") << ref.dump();
     for (const MethodInfo& q : quadrature_methods()) {
       for (const std::string& solver : solvers) {
         const std::string args = base + " --integrator " + std::string(q.name) + " --solver " + solver;
-        const nlohmann::ordered_json j = run_json(args);
+        const nlohmann::ordered_json j = test::run_lac_json(args);
         ASSERT_EQ(j["status"], "ok") << args << ": " << j.dump();
         EXPECT_EQ(j["solver"], std::string(to_string(parse_root_method(solver)))) << args;
         EXPECT_EQ(j["integrator"].get<std::string>().rfind(std::string(q.name), 0), 0u) << args << ": " << j["integrator"];
@@ -127,9 +118,9 @@ TEST(CliTriangle, CsvAndSvg) {
 
 TEST(CliTriangle, StatusesAndBadInput) {
   // Proven outside the drawable region: a status with its reason, exit 3 (no usable curve).
-  const nlohmann::ordered_json none = run_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
+  const nlohmann::ordered_json none = test::run_lac_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
   EXPECT_EQ(none["status"], "no_solution");
-  EXPECT_NE(none["message"].get<std::string>().find("drawable region"), std::string::npos) << none.dump();
+  EXPECT_NE(none["message"].get<std::string>().find("alpha > 1"), std::string::npos) << none.dump();
   for (const char* key : {"length", "kappa0", "kappa1"}) EXPECT_TRUE(none[key].is_null()) << key;
   EXPECT_TRUE(none["segments"].empty());
   EXPECT_FALSE(none.contains("points"));
@@ -143,7 +134,10 @@ TEST(CliTriangle, StatusesAndBadInput) {
   const test::CliRun option = test::run_lac(kG1 + " --tol 1e-10");  // an option without --integrator
   EXPECT_EQ(option.status, 2);
   EXPECT_NE(option.out.find("--integrator"), std::string::npos) << option.out;
-  const test::CliRun collinear = test::run_lac("g1 --points '0,0 1,0 2,0' --alpha 1");
+  const test::CliRun degenerate = test::run_lac("g1 --points '0,0 0,0 2,0' --alpha 1");
+  EXPECT_EQ(degenerate.status, 2);
+  EXPECT_NE(degenerate.out.find("points"), std::string::npos) << degenerate.out;
+  const test::CliRun collinear = test::run_lac("compound --points '0,0 1,0 2,0' --alpha0 1 --alpha1 2");
   EXPECT_EQ(collinear.status, 2);
   EXPECT_NE(collinear.out.find("turning"), std::string::npos) << collinear.out;
 }

@@ -1,23 +1,24 @@
-// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R11, R13, R14).
+// Regression tests for fixed fuzzing findings of docs/robustness.md (R1, R2, R4, R5, R7, R8, R11, R13, R14, R23).
 // Inputs are the ones the fuzzers saved (fuzz/findings/fuzz_<target>/), reduced to the call
 // that went wrong; each test checks the correct behaviour.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <sys/wait.h>
 
 #include "lac/common/error.hpp"
-#include "tests/support/run_cli.hpp"
+#include "lac/constructions/g1_hermite.hpp"
+#include "lac/constructions/space_segment.hpp"
+#include "lac/constructions/triangle_g1.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/space/frenet.hpp"
 #include "lac/curves/space/la_space_curve.hpp"
-#include "lac/constructions/triangle_g1.hpp"
-#include "lac/constructions/space_segment.hpp"
 #include "lac/special/incomplete_gamma.hpp"
+#include "tests/support/run_cli.hpp"
 
 namespace {
 
@@ -35,12 +36,14 @@ void expect_finite_or_input_error(Call call, const std::string& parameter, const
 // Finding R1 (fuzz_la_curve): closed-form conversions return NaN instead of rejecting the argument.
 TEST(FuzzRegression, LaCurveConversionsNeverReturnNan) {
   const lac::LaCurve big(1e300, 1e300);
-  expect_finite_or_input_error([&] { return big.s_at_theta(1e-300); }, "theta", "LaCurve(1e300, 1e300).s_at_theta(1e-300)");
+  expect_finite_or_input_error([&] { return big.s_at_theta(1e-300); }, "theta",
+                               "LaCurve(1e300, 1e300).s_at_theta(1e-300)");
   const lac::LaCurve steep(-DBL_MAX, 5);
   expect_finite_or_input_error([&] { return steep.s_at_theta(-6.9388939039072284e-18); }, "theta",
                                "LaCurve(-DBL_MAX, 5).s_at_theta(-6.9e-18)");
   const lac::LaCurve clothoid_like(0, 7.945556640625);
-  expect_finite_or_input_error([&] { return clothoid_like.theta_at_s(DBL_MAX); }, "s", "LaCurve(0, 7.95).theta_at_s(DBL_MAX)");
+  expect_finite_or_input_error([&] { return clothoid_like.theta_at_s(DBL_MAX); }, "s",
+                               "LaCurve(0, 7.95).theta_at_s(DBL_MAX)");
   const lac::LaCurve spiral(1, DBL_MAX);
   expect_finite_or_input_error([&] { return spiral.rho_at_theta(2); }, "theta", "LaCurve(1, DBL_MAX).rho_at_theta(2)");
 }
@@ -68,7 +71,9 @@ TEST(FuzzRegression, GammaIncOverflowIsAStatus) {
   for (double a : {5e-324, 1e-310}) {
     lac::special::GammaIncResult r;
     EXPECT_NO_THROW(r = lac::special::gamma_inc(a, {-0.0, -0.0})) << "a = " << a;
-    if (r.status == lac::Status::ok) EXPECT_TRUE(std::isfinite(std::abs(r.value)));
+    if (r.status == lac::Status::ok) {
+      EXPECT_TRUE(std::isfinite(std::abs(r.value)));
+    }
     EXPECT_NO_THROW(lac::special::gamma_inc_difference(a, {-0.0, -0.0}, {-5.562744140625, -8})) << "a = " << a;
   }
 }
@@ -92,7 +97,6 @@ TEST(FuzzRegression, CliRejectsHugePointCounts) {
     EXPECT_NE(r.out.find("samples = 2147483647"), std::string::npos) << r.out;
   }
 }
-
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
@@ -259,3 +263,49 @@ TEST(FuzzRegression, SpaceSolverStopsAtItsEvaluationBudget) {
 }
 
 }  // namespace
+
+// Finding R23 (fuzz_g1_hermite campaign): once tiny chords were accepted (R5's similarity
+// invariance), a chord near DBL_MIN with extra windings gave a usable segment with infinite end
+// curvature, and coordinates near DBL_MAX a usable one with an infinite position residual. A
+// solution that leaves the double range when scaled to the chord is numerical_failure; a chord of
+// 1e-300 still solves like the unit chord.
+TEST(FuzzRegression, G1HermiteBeyondTheDoubleRangeIsNumericalFailure) {
+  const std::complex<double> tiny0{DBL_MIN, -5e-324}, tiny1{-5e-324, DBL_MIN};
+  const std::complex<double> huge0{DBL_MAX, 1e300}, huge1{DBL_MAX, -8};
+  struct Case {
+    lac::G1HermiteProblem problem;
+    int winding;
+    std::string_view solver;
+  };
+  const Case cases[] = {
+      {{tiny0, 4.4873046875, tiny1, 1, -0.72265625}, -3, "bisection"},
+      {{tiny0, 4.4873046875, tiny1, 1, -0.749755859375}, -3, "auto"},
+      {{tiny0, 4.4873046875, tiny1, 1.2783203125, 1}, -3, "secant"},
+      {{{-5e-324, -5e-324}, 4.7861328125, {DBL_MIN, -5e-324}, -6.9912109375, 1}, -2, "toms748"},
+      {{huge0, 26.64, huge1, 4.404296875, 1}, -1, "secant"},
+      {{huge0, 26.64, {DBL_MAX, -1}, -26.64, 0.5}, 2, "ceres"},
+  };
+  for (const Case& c : cases)
+    for (bool verify : {false, true}) {
+      lac::G1HermiteOptions o;
+      o.winding = c.winding;
+      o.solver = std::string(c.solver);
+      o.verify = verify;  // re-integrates the end point from p0: overflows near DBL_MAX
+      const lac::G1HermiteResult r = lac::solve_g1_hermite(c.problem, o);
+      const std::string what = std::string(c.solver) + " winding " + std::to_string(c.winding) + " verify " +
+                               std::to_string(verify) + ": " + std::string(lac::to_string(r.summary.status)) + " " +
+                               r.summary.message;
+      if (r.usable()) {
+        EXPECT_TRUE(std::isfinite(r.curve.length())) << what;
+        EXPECT_TRUE(std::isfinite(r.curve.kappa_at(0)) && std::isfinite(r.curve.kappa_at(r.curve.length()))) << what;
+        EXPECT_TRUE(std::isfinite(r.summary.residuals.position.value_or(0.0))) << what;
+      } else {
+        EXPECT_NE(r.summary.status, lac::Status::no_solution) << what;  // nothing is proven here
+      }
+    }
+  // The unit problem scaled by 1e-300 still solves, with curvature scaled by 1e300.
+  const lac::G1HermiteResult unit = lac::solve_g1_hermite({{0, 0}, 0.3, {1, 0}, -0.4, -2.0});
+  const lac::G1HermiteResult small = lac::solve_g1_hermite({{0, 0}, 0.3, {1e-300, 0}, -0.4, -2.0});
+  ASSERT_TRUE(unit.usable() && small.usable()) << small.summary.message;
+  EXPECT_NEAR(small.curve.kappa_at(0) * 1e-300 / unit.curve.kappa_at(0), 1.0, 1e-12);
+}

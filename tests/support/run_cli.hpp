@@ -1,11 +1,13 @@
 #pragma once
 // Runs the `lac` executable of this build folder with arguments: its exit status and output
-// (stdout and stderr together, or one of them).
+// (stdout and stderr together, or one of them), or its JSON output checked.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace lac::test {
@@ -32,5 +34,18 @@ inline CliRun run_lac_stderr(const std::string& args) { return run_lac(args, " 2
 
 /// As run_lac, `out` holding stdout only (stderr discarded).
 inline CliRun run_lac_stdout(const std::string& args) { return run_lac(args, " 2>/dev/null"); }
+
+/// Runs `lac args`, expects `exit_status` and returns the output parsed as JSON (a test failure
+/// and an empty value when it is not JSON).
+inline nlohmann::ordered_json run_lac_json(const std::string& args, int exit_status = 0) {
+  const CliRun run = run_lac(args);
+  EXPECT_EQ(run.status, exit_status) << args << "\n" << run.out;
+  try {
+    return nlohmann::ordered_json::parse(run.out);
+  } catch (const nlohmann::json::exception& e) {
+    ADD_FAILURE() << args << ": not JSON (" << e.what() << ")\n" << run.out;
+    return {};
+  }
+}
 
 }  // namespace lac::test

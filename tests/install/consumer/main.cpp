@@ -5,6 +5,8 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <lac/constructions/chain.hpp>
+#include <lac/constructions/g1_hermite.hpp>
 #include <lac/constructions/g2_hermite.hpp>
 #include <lac/constructions/s_curve.hpp>
 #include <lac/constructions/space_segment.hpp>
@@ -47,6 +49,16 @@ int main() {
   // Compound rhythm: α0 = −0.5 then α1 = 1.5, 40 % of the turning in segment 0.
   const auto compound = lac::solve_compound(t, -0.5, 1.5, 0.4);
   check(compound.usable() && compound.curve.segments().size() == 2, "solve_compound", summary_of(compound));
+
+  // G1 Hermite: points and tangent angles, one LA segment of slope α.
+  const auto h1 = lac::solve_g1_hermite({{0, 0}, 0.3, {1, 0}, -0.4, -2.0});
+  check(h1.usable() && h1.curve.segments().size() == 1, "solve_g1_hermite", summary_of(h1));
+
+  // A closed G1 chain through six points, tangents estimated.
+  const auto chain = lac::solve_chain(
+      {.points = {{0, 0}, {2, -0.5}, {4, 0.3}, {5, 2}, {4, 4}, {0, 3}}, .alpha = -1.0, .closed = true});
+  check(chain.usable() && chain.curve.segments().size() == 6 && chain.info.thetas.size() == 6, "solve_chain",
+        summary_of(chain));
 
   // S-curve through an inflection (α < 0) from four control points.
   const auto s = lac::solve_s_curve({{{0, 0}, {1, 0}, {2, 1}, {3, 1}}}, -1.0,

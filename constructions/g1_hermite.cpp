@@ -1,0 +1,843 @@
+#include "lac/constructions/g1_hermite.hpp"
+
+#include <algorithm>
+#include <array>
+#include <boost/math/quadrature/gauss.hpp>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "lac/common/error.hpp"
+#include "lac/constructions/detail/tangent_integral.hpp"
+#include "lac/constructions/s_curve.hpp"
+#include "lac/constructions/triangle_g1.hpp"
+#include "lac/solvers/root_1d.hpp"
+
+namespace lac {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kPi = std::numbers::pi;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// ---- forward-mode derivative (value, d/dx) of everything that depends on the shape variable x ----
+struct Dual {
+  double v = 0, d = 0;
+};
+Dual operator+(Dual a, Dual b) { return {a.v + b.v, a.d + b.d}; }
+Dual operator-(Dual a, Dual b) { return {a.v - b.v, a.d - b.d}; }
+Dual operator-(Dual a, double k) { return {a.v - k, a.d}; }
+Dual operator-(Dual a) { return {-a.v, -a.d}; }
+Dual operator*(Dual a, Dual b) { return {a.v * b.v, a.v * b.d + a.d * b.v}; }
+Dual operator/(Dual a, Dual b) { return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)}; }
+Dual operator*(double k, Dual a) { return {k * a.v, k * a.d}; }
+Dual operator+(double k, Dual a) { return {k + a.v, a.d}; }
+Dual dual_pow(Dual a, double e) {  // a > 0
+  const double p = std::pow(a.v, e);
+  return {p, e * p / a.v * a.d};
+}
+Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
+
+// Gauss–Legendre rules on [0, 1] (Boost.Math's tables).
+template <int N>
+struct Rule {
+  std::array<double, N> x{}, w{};
+};
+template <int N>
+const Rule<N>& rule() {
+  static const Rule<N> r = [] {
+    using G = boost::math::quadrature::gauss<double, N>;
+    Rule<N> out;
+    const auto& a = G::abscissa();
+    const auto& b = G::weights();
+    for (size_t k = 0; k < a.size(); ++k) {
+      out.x[k] = 0.5 * (1.0 - a[k]);
+      out.x[N - 1 - k] = 0.5 * (1.0 + a[k]);
+      out.w[k] = out.w[N - 1 - k] = 0.5 * b[k];
+    }
+    return out;
+  }();
+  return r;
+}
+constexpr int kN = 20;             // nodes per panel of the general kernel
+constexpr double kPanelTurn = 6;   // radians of φ per 20-node panel (error ≲ 1e-15)
+constexpr int kMaxPanels = 256;
+
+// ---- the power law K(q) = sgn(q)|q|^b, b = −1/α (α ≠ 0), F = |q|^p / p, p = b + 1 (log|q| at α = 1) ----
+struct Power {
+  double alpha, b, p;
+  bool log_F;
+  explicit Power(double a) : alpha(a), b(-1.0 / a), p(1.0 - 1.0 / a), log_F(a == 1) {}
+
+  double K(double q) const { return std::copysign(std::pow(std::abs(q), b), q); }
+  double F(double q) const {
+    const double aq = std::abs(q);
+    return log_F ? std::log(aq) : aq * std::pow(aq, b) / p;
+  }
+  Dual F(Dual q) const {
+    const double aq = std::abs(q.v);
+    if (log_F) return {std::log(aq), q.d / q.v};
+    const double w = std::pow(aq, b);
+    return {aq * w / p, std::copysign(w, q.v) * q.d};
+  }
+  // K^(n)(m) for n = 0 … 5: b(b−1)…(b−n+1) sgn(m)^(n+1) |m|^(b−n).
+  void derivatives(double m, double out[6]) const {
+    const double am = std::abs(m), sg = m < 0 ? -1.0 : 1.0, inv = 1.0 / am;
+    double c = 1, pw = std::pow(am, b);
+    for (int n = 0; n < 6; ++n) {
+      out[n] = c * pw * (n % 2 == 0 ? sg : 1.0);
+      c *= b - n;
+      pw *= inv;
+    }
+  }
+  // F[m − d/2, m + d/2] by its midpoint series K + K''d²/24 + K''''d⁴/1920 (|d| ≤ 1e-3|m|).
+  Dual midpoint(Dual m, Dual d) const {
+    double k[6];
+    derivatives(m.v, k);
+    const double d2 = d.v * d.v;
+    return {k[0] + k[2] * d2 / 24 + k[4] * d2 * d2 / 1920,
+            (k[1] + k[3] * d2 / 24 + k[5] * d2 * d2 / 1920) * m.d + (k[2] * d.v / 12 + k[4] * d2 * d.v / 480) * d.d};
+  }
+  // F[x, z] with F(x) given: the difference quotient, or the series where it cancels.
+  Dual divided(Dual x, Dual Fx, Dual z) const {
+    const Dual d = z - x, m = 0.5 * (x + z);
+    if (std::abs(d.v) <= 1e-3 * std::abs(m.v)) return midpoint(m, d);
+    return (F(z) - Fx) / d;
+  }
+  // g = F[s − c, s + c] / s, even in s and finite at s = 0 (the antisymmetric S, Δ = 0).
+  Dual g(Dual s, Dual c) const {
+    if (std::abs(c.v) <= 1e-3 * std::abs(s.v)) return midpoint(s, 2.0 * c) / s;
+    if (std::abs(s.v) <= 1e-3 * std::abs(c.v)) {
+      const Dual a = c.v < 0 ? -c : c;  // (F(a + s) − F(a − s)) / (2as), odd series in s
+      double k[6];
+      derivatives(a.v, k);
+      const double s2 = s.v * s.v;
+      const Dual num{k[0] + k[2] * s2 / 6 + k[4] * s2 * s2 / 120,
+                     (k[1] + k[3] * s2 / 6 + k[5] * s2 * s2 / 120) * a.d + (k[2] * s.v / 3 + k[4] * s2 * s.v / 30) * s.d};
+      return num / a;
+    }
+    return (F(s + c) - F(s - c)) / (2.0 * c * s);
+  }
+};
+
+// t^e at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection, the
+// α > 1 limits): they depend on α and the panel count only, so they are computed once per thread.
+// The entry returned last is never the one replaced next, so two lookups in a row stay valid.
+const std::vector<double>& graded_powers(double e, int panels) {
+  struct Entry {
+    double e = kNaN;
+    int panels = 0;
+    std::vector<double> v;
+  };
+  thread_local std::array<Entry, 8> cache;
+  thread_local size_t next = 0;
+  for (size_t j = 0; j < cache.size(); ++j)
+    if (cache[j].e == e && cache[j].panels == panels) {
+      if (next % cache.size() == j) ++next;
+      return cache[j].v;
+    }
+  Entry& c = cache[next++ % cache.size()];
+  const Rule<kN>& g = rule<kN>();
+  c.e = e;
+  c.panels = panels;
+  c.v.resize(static_cast<size_t>(kN * panels));
+  for (int p = 0; p < panels; ++p)
+    for (int k = 0; k < kN; ++k) c.v[static_cast<size_t>(kN * p + k)] = std::pow((p + g.x[k]) / panels, e);
+  return c.v;
+}
+
+// ∫₀¹ e^{iφ} du and its derivative in x.
+struct Integral {
+  Complex I, dI;
+};
+void add(Integral& acc, Dual weight, Dual phi) {
+  const Complex e = std::polar(1.0, phi.v);
+  acc.I += weight.v * e;
+  acc.dI += Complex(weight.d, weight.v * phi.d) * e;
+}
+int panels_for(double turning) {
+  return std::clamp(static_cast<int>(std::ceil(std::abs(turning) / kPanelTurn)), 1, kMaxPanels);
+}
+// node(t, w) over `panels` equal N-node Gauss–Legendre panels of [t0, t1]; returns the node count.
+template <int N, class Node>
+long gauss_panels(double t0, double t1, int panels, Node&& node) {
+  const Rule<N>& g = rule<N>();
+  const double h = (t1 - t0) / panels;
+  for (int p = 0; p < panels; ++p)
+    for (int k = 0; k < N; ++k) node(t0 + (p + g.x[k]) * h, g.w[k] * h);
+  return static_cast<long>(N) * panels;
+}
+// The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on [t0, t1]: 12, 16 or 20 nodes
+// up to omega = 4, 8, 12, more 20-node panels beyond (error ≲ 1e-14 of the piece for the two kernels
+// that use it, checked against a long-double reference; docs/g1_hermite.md).
+template <class Node>
+long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
+  if (omega <= 4) return gauss_panels<12>(t0, t1, 1, node);
+  if (omega <= 8) return gauss_panels<16>(t0, t1, 1, node);
+  return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
+}
+
+// The normalized problem: φ0, Δ and the law; evaluate(x) gives f, f' and ∫e^{iφ}.
+struct Trial {
+  bool ok = false;
+  double f = kNaN, df = kNaN;
+  Complex I;
+  double qa = 0, qb = 0;  // the segment's q (α ≠ 0) or log|κ| (α = 0) at u = 0, 1
+};
+
+struct Normalized {
+  double alpha = -1, phi0 = 0, delta = 0;
+  long evaluations = 0;
+  long constructions = 0;
+
+  Trial evaluate(double x) {
+    ++constructions;
+    Integral r;
+    Trial t;
+    if (alpha == -1) {
+      r = clothoid(x);
+      t.qa = delta - x;
+      t.qb = delta + x;
+    } else if (alpha == 0) {
+      if (!exponential(x, r, t)) return t;
+    } else if (!power(x, r, t)) {
+      return t;
+    }
+    t.I = r.I;
+    t.f = r.I.imag();
+    t.df = r.dI.imag();
+    t.ok = std::isfinite(t.f) && std::isfinite(t.df) && std::isfinite(t.I.real());
+    return t;
+  }
+
+  // α = −1 [Bertolazzi–Frego 2015]: φ = φ0 + (Δ − A)u + Au², ∂φ/∂A = u² − u. The node count
+  // follows the largest |dφ/dv| on v ∈ [−1, 1] (u = (1 + v)/2): 12, 16 or 20 nodes keep the
+  // Gauss–Legendre error of e^{iφ} below 1e-14 for it up to 4.5, 9, 13 rad.
+  template <int N>
+  Integral clothoid_rule(double A, int panels) {
+    const Rule<N>& g = rule<N>();
+    Integral r;
+    const double h = 1.0 / panels;
+    for (int p = 0; p < panels; ++p)
+      for (int k = 0; k < N; ++k) {
+        const double u = (p + g.x[k]) * h, dphi = u * (u - 1);
+        const double phi = phi0 + delta * u + A * dphi;
+        const Complex e = std::polar(g.w[k] * h, phi);
+        r.I += e;
+        r.dI += Complex(0, dphi) * e;
+      }
+    evaluations += static_cast<long>(N) * panels;
+    return r;
+  }
+  Integral clothoid(double A) {
+    const double omega = 0.5 * (std::abs(delta) + std::abs(A));
+    if (omega <= 4.5) return clothoid_rule<12>(A, 1);
+    if (omega <= 9) return clothoid_rule<16>(A, 1);
+    return clothoid_rule<20>(A, std::max(1, static_cast<int>(std::ceil(omega / 13))));
+  }
+
+  // α = 0: κ = σ e^{q}, q = qa + bu; φ = φ0 + Δ E(u), E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for
+  // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
+  // node: the denominator expm1(−|b|) is per evaluation.
+  bool exponential(double b, Integral& r, Trial& t) {
+    const bool series = std::abs(b) < 1e-6, mirror = b > 0;
+    const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
+    const Dual den{em, (em + 1) * dbeta};
+    auto E = [&](double u) -> Dual {
+      if (series) {
+        const double e1 = 0.5 * u * (u - 1), e2 = u * (u - 1) * (2 * u - 1) / 12;
+        return {u + b * e1 + b * b * e2, e1 + 2 * b * e2};
+      }
+      const double v = mirror ? 1 - u : u, n = std::expm1(beta * v);
+      const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
+      return mirror ? 1.0 + (-e) : e;
+    };
+    const int sub = panels_for(delta);
+    // Where |b| is large the turning gathers within 1/|b| of the steep end: panels ending at
+    // w, 4w, 16w, … from that end (w = 1/|b|).
+    std::vector<double> cuts{0.0};
+    const double w = 1.0 / std::abs(b);
+    if (std::abs(b) > 4) {
+      std::vector<double> from_end{0.0};
+      for (double d = w; d < 1.0; d *= 4) from_end.push_back(d);
+      from_end.push_back(1.0);
+      cuts.clear();
+      for (double d : from_end) cuts.push_back(b > 0 ? 1.0 - d : d);
+      std::sort(cuts.begin(), cuts.end());
+    } else {
+      cuts.push_back(1.0);
+    }
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
+                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+    // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
+    const double lr = b == 0 ? 0.0
+                      : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
+                              : std::log(-b) - std::log(-std::expm1(b));
+    t.qa = std::log(std::abs(delta)) + lr;
+    t.qb = t.qa + b;
+    return std::isfinite(t.qa) && std::isfinite(t.qb);
+  }
+
+  // α ≠ 0, −1: (m, c) = λ(s, c̄) with (s, c̄) = (Δ, a)/hypot(Δ, a) and λ from the turning:
+  // F[λ(s − c̄), λ(s + c̄)] = λ^(−1/α) s g = Δ  ⇒  λ = (hypot(Δ, a)/g)^(−α).
+  bool power(double a, Integral& r, Trial& t) {
+    const Power law(alpha);
+    Dual qa, qb;
+    if (alpha > 0) {
+      // q keeps its sign σ = sgn Δ: x = log(qb/qa) ∈ ℝ, (q̂a, q̂b) = σ(e^(−x/2), e^(x/2)) scaled by
+      // e^(−|x|/2); λ from λ^(−1/α) F[q̂a, q̂b] = Δ.
+      const double y = 0.5 * a, sy = y < 0 ? -1.0 : 1.0, sigma = delta < 0 ? -1.0 : 1.0;
+      const double ea = std::exp(-y - std::abs(y)), eb = std::exp(y - std::abs(y));
+      const Dual qha{sigma * ea, sigma * ea * (-0.5 - 0.5 * sy)}, qhb{sigma * eb, sigma * eb * (0.5 - 0.5 * sy)};
+      const Dual G = law.divided(qha, law.F(qha), qhb);
+      const Dual lambda = dual_pow(G / Dual{delta, 0}, alpha);
+      qa = lambda * qha;  // not m ∓ c: q at the end next to the zero is tiny (cancellation)
+      qb = lambda * qhb;
+      if (!std::isfinite(lambda.d)) return false;
+    } else {
+      const double hv = std::hypot(delta, a);
+      if (hv == 0) {  // straight
+        r.I = std::polar(1.0, phi0);
+        t.qa = t.qb = 0;
+        return true;
+      }
+      const Dual h{hv, a / hv};
+      const Dual s = Dual{delta, 0} / h, cbar = Dual{a, 1} / h;
+      const Dual g = law.g(s, cbar);
+      const Dual lambda = dual_pow(h / g, -alpha);
+      qa = lambda * (s - cbar);
+      qb = lambda * (s + cbar);
+      if (!std::isfinite(lambda.d)) return false;
+    }
+    const Dual c = 0.5 * (qb - qa);
+    t.qa = qa.v;
+    t.qb = qb.v;
+    if (!(std::isfinite(qa.v) && std::isfinite(qb.v))) return false;
+    if (alpha > 0 && !(qa.v * qb.v > 0)) return false;
+    const Dual Fa = law.F(qa);
+    // q(zero) = 0, from the end nearer to it.
+    const Dual ustar = c.v != 0 ? (-qa) / (2.0 * c) : Dual{kNaN, 0};
+    const double zero = ustar.v;
+    // A graded piece from the zero u* of q (α < 0) to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
+    // φ = φ0 + (F(q_e) t^(4p) − F(qa)) / (2c) (F(0) = 0 for α < 0), all in x's derivative.
+    auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
+      const Dual span = Dual{e, 0} - ustar;
+      const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
+      const std::vector<double>* powers = t0.v == 0 ? &graded_powers(4 * law.p, panels) : nullptr;
+      Integral piece;
+      const Dual len = 1.0 + (-t0), inv = Dual{1, 0} / (2.0 * c), a0 = phi0 + (-Fa) * inv, a1 = Fe * inv, jac = 4.0 * span;
+      size_t k = 0;
+      evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double tau, double wt) {
+        const Dual t = t0 + tau * len;
+        const Dual tp = powers ? Dual{(*powers)[k++], 0} : dual_pow(t, 4 * law.p);
+        add(piece, wt * ((t * t * t) * jac), a0 + tp * a1);
+      });
+      // × (1 − t0), the Jacobian of τ ↦ t.
+      r.I += sign * (len.v * piece.I);
+      r.dI += sign * (len.v * piece.dI + len.d * piece.I);
+    };
+    // α > 0 with the zero u* of q outside [0, 1] by d < 2: κ is steep at the end next to it. With
+    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
+    // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
+    // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
+    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out, so ≤ ⌈42|p|⌉ panels.
+    auto steep = [&](bool near_start) {
+      const Dual two_c = 2.0 * c;
+      const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
+      const Dual qB = near_start ? qb : qa;
+      const double phiB = near_start ? phi0 + delta : phi0, p = law.p;
+      const Dual amp = (law.log_F ? Dual{1, 0} : dual_pow(qB.v < 0 ? -qB : qB, p)) / two_c;
+      const Dual w0 = dual_log((d.v > 1e-18 ? d : Dual{1e-18, 0}) / rB);
+      const int panels = std::max(1, static_cast<int>(std::ceil(-w0.v * std::abs(p))));
+      for (int i = 0; i < panels; ++i) {
+        // τ ∈ [0, 1] ↦ w = w0(1 − τ); this panel's τ ∈ [i, i + 1]/panels.
+        const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
+        const double slope = std::abs(amp.v) * std::max(std::exp(p * w0.v * (1 - ta)), std::exp(p * w0.v * (1 - tb)));
+        const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
+        evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+          const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
+          const double ew = std::exp(w.v), em = law.log_F ? 0.0 : std::expm1(p * w.v);
+          const Dual E = law.log_F ? w : Dual{em / p, (em + 1) * w.d};
+          add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
+        });
+      }
+    };
+    if (alpha < 0 && zero > -0.5 && zero < 1.5) {
+      if (zero > 0 && zero < 1) {
+        graded(0.0, Fa, Dual{0, 0}, -1.0);
+        graded(1.0, law.F(qb), Dual{0, 0}, 1.0);
+      } else if (zero <= 0) {
+        graded(1.0, law.F(qb), dual_pow((-ustar) / (1.0 + (-ustar)), 0.25), 1.0);
+      } else {
+        graded(0.0, Fa, dual_pow((ustar - 1.0) / ustar, 0.25), -1.0);
+      }
+    } else if (alpha > 0 && zero > -2 && zero < 3) {
+      steep(zero <= 0);
+    } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
+      const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
+      evaluations += gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
+        const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
+        add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
+      });
+    }
+    return true;
+  }
+};
+
+// ∫₀¹ e^{iΔv^p} dv (0 < p < 1): v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
+Complex power_limit_integral(double delta, double p, long& evaluations) {
+  const double k = std::max(4.0, std::ceil(4 / p));
+  const int panels = panels_for(delta);
+  const std::vector<double>& jac = graded_powers(k - 1, panels);
+  const std::vector<double>& phase = graded_powers(k * p, panels);
+  Complex sum;
+  size_t i = 0;
+  evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {
+    sum += (wt * k * jac[i]) * std::polar(1.0, delta * phase[i]);
+    ++i;
+  });
+  return sum;
+}
+
+// ---- shape guesses ----
+// α = −1: the small-angle solution A = 3(φ0 + φ1) of Im∫e^{iφ} ≈ ∫φ = 0 [Bertolazzi–Frego 2015].
+double clothoid_guess(double phi0, double delta) { return 3 * (2 * phi0 + delta); }
+// α ≠ 0: the clothoid's guess moved to the law by matching the ratio of the end curvatures.
+double power_guess(double alpha, double phi0, double delta) {
+  const double A = clothoid_guess(phi0, delta);
+  if (alpha == -1) return A;
+  const double ka = delta - A, kb = delta + A;
+  const auto Q = [&](double k) { return std::copysign(std::pow(std::abs(k), -alpha), k); };
+  if (alpha < 0) {
+    const double qa = Q(ka), qb = Q(kb), sum = qa + qb;
+    if (!(std::abs(sum) > 1e-12 * (std::abs(qa) + std::abs(qb)))) return A;
+    return delta * (qb - qa) / sum;
+  }
+  // α > 0: q keeps its sign, a ∈ (−|Δ|, |Δ|); the end curvature ratio of the clothoid, clamped.
+  const double r = (ka * kb > 0) ? (Q(kb) - Q(ka)) / (Q(kb) + Q(ka)) : (A > 0 ? 0.9 : -0.9);
+  return delta * std::clamp(r, -0.9, 0.9);
+}
+// α = 0: Im∫e^{iφ} ≈ φ0 + Δ∫E = 0 with ∫E = 1/b − 1/expm1(b) (decreasing from 1 to 0).
+double exponential_guess(double phi0, double delta) {
+  const double mu = -phi0 / delta;
+  if (!(mu > 0 && mu < 1)) return 0;
+  double lo = -800, hi = 800, b = 12 * (0.5 - mu);
+  for (int i = 0; i < 60; ++i) {
+    const bool small = std::abs(b) < 1e-4;
+    const double em = small ? 0.0 : std::expm1(b);
+    const double v = (small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu;
+    if (v > 0) lo = b; else hi = b;
+    const double dM = small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em);
+    double next = b - v / dM;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - b) <= 1e-12 * (1 + std::abs(b))) return next;
+    b = next;
+  }
+  return b;
+}
+
+double wrap(double a) {
+  double r = std::remainder(a, 2 * kPi);
+  if (r <= -kPi) r += 2 * kPi;
+  return r;
+}
+
+G1Shape classify_input(double phi0, double phi1, double delta) {
+  if (phi0 == 0 && phi1 == 0 && delta == 0) return G1Shape::straight;
+  if (std::abs(delta) >= kPi) return G1Shape::other;
+  if (phi0 * phi1 > 0) return G1Shape::s_shaped;
+  if (phi0 * phi1 < 0) return G1Shape::convex;
+  return G1Shape::other;
+}
+
+constexpr G1SolverInfo kSolvers[] = {
+    {"auto", "Newton on the reduced equation with its analytic derivative, safeguarded by a sign bracket (fast path)"},
+    {"bisection", "1-D registry bisection on the reduced equation in the bracket found around the guess"},
+    {"secant", "1-D registry secant (bracketed) on the reduced equation"},
+    {"toms748", "1-D registry TOMS 748 (Boost) on the reduced equation"},
+    {"ceres", "1-D registry Ceres on the reduced equation"},
+    {"triangle", "001's similar-triangle bisection on the control triangle (tangents on opposite sides, |turning| < pi)"},
+    {"s-curve", "004's Lambda search (alpha < 0, tangents on one side of the chord)"},
+};
+
+void check_problem(const G1HermiteProblem& pr) {
+  require_finite("g1", "p0.x", pr.p0.real());
+  require_finite("g1", "p0.y", pr.p0.imag());
+  require_finite("g1", "p1.x", pr.p1.real());
+  require_finite("g1", "p1.y", pr.p1.imag());
+  require_finite("g1", "theta0", pr.theta0);
+  require_finite("g1", "theta1", pr.theta1);
+  if (!(std::abs(pr.alpha) <= kG1MaxAbsAlpha)) throw_input_error("g1", "alpha", pr.alpha, "[-5, 5]");
+  if (pr.alpha != 0 && std::abs(pr.alpha) < kG1MinAbsAlpha)
+    throw_input_error("g1", "alpha", pr.alpha, "0 or 0.1 <= |alpha| <= 5");
+  const double r = std::abs(pr.p1 - pr.p0);
+  if (!std::isfinite(r)) throw_input_error("g1", "p1", "p1 - p0 beyond the double range (|p1 - p0| must be finite)");
+  // The problem is similarity-invariant: the chord is compared with the coordinates' own size,
+  // so that a tiny configuration solves like its unit-size copy; subnormal chords are refused.
+  const double scale = std::max({std::abs(pr.p0.real()), std::abs(pr.p0.imag()), std::abs(pr.p1.real()),
+                                 std::abs(pr.p1.imag())});
+  if (!(r > 1e-12 * scale) || !(r >= std::numeric_limits<double>::min()))
+    throw_input_error("g1", "p1", "coincides with p0 (the chord must have positive length)");
+}
+
+// Builds the result curve from a solved shape; checks it in closed form (angles) and by the
+// solver's integral (position), or by options.integrator with `verify`.
+void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOptions& o, const Normalized& nz,
+            const Trial& t, double x) {
+  Summary& sum = res.summary;
+  const Complex d = pr.p1 - pr.p0;
+  const double r = std::abs(d);
+  const Complex rot = d / r;
+  const double L = 1.0 / t.I.real();
+  if (!(t.I.real() > 0) || !std::isfinite(L)) {
+    res.conclude(Status::not_converged, "g1: the root found runs away from p1 (Re of the end-point integral <= 0)");
+    return;
+  }
+  if (nz.alpha > 0 && nz.delta != 0 && !std::isfinite(std::pow(std::min(std::abs(t.qa), std::abs(t.qb)), -1 / nz.alpha - 2))) {
+    // LaLaw's series for K'' (closed-form θ of the segment) overflows there.
+    res.conclude(Status::numerical_failure, "g1: the solution's end-curvature ratio (q ratio " +
+                                                format_number(std::abs(t.qb / t.qa)) +
+                                                ") is beyond what LaSegment evaluates in double precision (e^700 class)");
+    return;
+  }
+  const bool straight_other_law = nz.alpha >= 0 && nz.delta == 0;
+  const LaLaw law = straight_other_law ? LaLaw{-1} : LaLaw{nz.alpha, nz.alpha == 0 && nz.delta < 0 ? -1.0 : 1.0};
+  try {
+    LaSegment seg(law, 0.0, 1.0, straight_other_law ? 0.0 : t.qa, straight_other_law ? 0.0 : t.qb, nz.phi0,
+                  Placement{pr.p0, L * r, rot});
+    res.curve = PlanarCurve({seg});
+    G1HermiteInfo& info = res.info;
+    info.turning = seg.turning();
+    info.length = seg.length();
+    info.qa = seg.qa();
+    info.qb = seg.qb();
+    info.x = x;
+    info.inflection = seg.inflection_s();
+    const double angle = std::max(std::abs(wrap(seg.theta_start() - pr.theta0)), std::abs(wrap(seg.theta_end() - pr.theta1)));
+    double position = L * std::abs(t.I.imag()) * r;
+    if (o.verify) {
+      // Every registry method (igf included) through the construction integrator of the 004 solvers.
+      long evaluations = 0;
+      const Complex I = detail::TrialIntegrator(o.integrator)(law, seg.normalized(), evaluations);
+      sum.evaluations += evaluations;
+      if (!std::isfinite(I.real()) || !std::isfinite(I.imag())) {
+        res.conclude(Status::numerical_failure, "g1: the integrator could not evaluate the end point of the solution");
+        return;
+      }
+      const Complex end = pr.p0 + seg.scale() * rot * I;
+      sum.error_estimate = std::abs(end - (pr.p0 + seg.scale() * rot * t.I));
+      position = std::abs(end - pr.p1);
+    }
+    sum.residuals.position = position;
+    sum.residuals.angle = angle;
+    if (!std::isfinite(position) || !std::isfinite(info.length) || !std::isfinite(seg.kappa_start()) ||
+        !std::isfinite(seg.kappa_end())) {
+      // The shape is fine, but scaled to this chord its length, end curvatures or end point
+      // leave the double range (a chord near DBL_MIN or coordinates near DBL_MAX).
+      res.curve = PlanarCurve{};
+      res.conclude(Status::numerical_failure, "g1: the solution's length, end curvatures or end point (chord " +
+                                                  format_number(r) + ") are beyond the double range");
+      return;
+    }
+    // Shape of the solution.
+    if (t.qa == 0 && t.qb == 0) info.shape = G1Shape::straight;
+    else if (std::abs(info.turning) >= kPi || nz.phi0 * (nz.phi0 + nz.delta) == 0) info.shape = G1Shape::other;
+    else if (info.inflection) info.shape = nz.phi0 * (nz.phi0 + nz.delta) > 0 ? G1Shape::s_shaped : G1Shape::convex_inflection;
+    else info.shape = G1Shape::convex;
+    const bool good = position <= o.accept * r && angle <= o.accept;
+    res.conclude(good ? Status::ok : Status::tolerance_not_met,
+                 good ? "" : "g1: residuals position " + format_number(position / r) + " (chord units), angle " +
+                                 format_number(angle) + " above accept");
+  } catch (const InputError& e) {
+    res.conclude(Status::numerical_failure, std::string("g1: the solution has no double-precision segment: ") + e.what());
+  }
+}
+
+// A bracket [lo, hi] with a sign change of f around x0 (nearest first), within (xmin, xmax).
+struct Found {
+  bool ok = false;
+  double lo = 0, hi = 0, flo = 0, fhi = 0;
+};
+Found find_bracket(Normalized& nz, double x0, double xmin, double xmax, double step, int max_steps, int& used) {
+  Found b;
+  Trial t0 = nz.evaluate(x0);
+  ++used;
+  double xl = x0, fl = t0.ok ? t0.f : kNaN, xr = x0, fr = fl;
+  for (int j = 1; used < max_steps; ++j) {
+    for (int side : {1, -1}) {
+      const double x = x0 + side * j * step;
+      if (!(x > xmin && x < xmax)) continue;
+      const Trial t = nz.evaluate(x);
+      ++used;
+      if (!t.ok) continue;
+      double& xp = side > 0 ? xr : xl;
+      double& fp = side > 0 ? fr : fl;
+      if (std::isfinite(fp) && (fp > 0) != (t.f > 0) && t.I.real() > 0) {
+        b = {true, std::min(xp, x), std::max(xp, x), side > 0 ? fp : t.f, side > 0 ? t.f : fp};
+        return b;
+      }
+      xp = x;
+      fp = t.f;
+    }
+    if (!(x0 + j * step < xmax) && !(x0 - j * step > xmin)) break;
+  }
+  return b;
+}
+
+}  // namespace
+
+std::string_view to_string(G1Shape s) {
+  switch (s) {
+    case G1Shape::straight: return "straight";
+    case G1Shape::convex: return "convex";
+    case G1Shape::convex_inflection: return "convex-inflection";
+    case G1Shape::s_shaped: return "s-shaped";
+    case G1Shape::other: return "other";
+  }
+  return "other";
+}
+
+std::span<const G1SolverInfo> g1_hermite_solvers() { return kSolvers; }
+
+void G1HermiteOptions::validate() const {
+  bool known = false;
+  for (const G1SolverInfo& s : kSolvers) known = known || s.name == solver;
+  if (!known) {
+    std::string m(1, '\'');  // built step by step: GCC 12 warns (-Wrestrict) on "'" + std::string
+    m.append(solver).append("' is not one of");
+    for (const G1SolverInfo& s : kSolvers) m.append(" ").append(s.name);
+    throw_input_error("g1", "solver", m);
+  }
+  if (winding < -100 || winding > 100) throw_input_error("g1", "winding", winding, "[-100, 100]");
+  if (!(tolerance >= 1e-16 && tolerance <= 1e-3)) throw_input_error("g1", "tolerance", tolerance, "[1e-16, 1e-3]");
+  if (!(accept >= tolerance && accept <= 1)) throw_input_error("g1", "accept", accept, "[tolerance, 1]");
+  if (max_iterations < 1 || max_iterations > 10000) throw_input_error("g1", "max_iterations", max_iterations, "[1, 10000]");
+  if (max_bracket_steps < 1 || max_bracket_steps > 100000)
+    throw_input_error("g1", "max_bracket_steps", max_bracket_steps, "[1, 100000]");
+  std::visit([](const auto& m) { m.validate(); }, integrator);
+}
+
+G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOptions& o) {
+  const auto t_begin = std::chrono::steady_clock::now();
+  o.validate();
+  check_problem(pr);
+  G1HermiteResult res;
+  Summary& sum = res.summary;
+  sum.solver = o.solver;
+  sum.integrator = std::string(name_of(o.integrator));
+  const Complex d = pr.p1 - pr.p0;
+  const double chord_angle = std::arg(d);
+  Normalized nz;
+  nz.alpha = pr.alpha;
+  nz.phi0 = wrap(pr.theta0 - chord_angle);
+  const double phi1 = wrap(pr.theta1 - chord_angle);
+  nz.delta = phi1 - nz.phi0 + 2 * kPi * o.winding;
+  res.info.phi0 = nz.phi0;
+  res.info.phi1 = phi1;
+  res.info.turning = nz.delta;
+  res.info.shape = classify_input(nz.phi0, phi1, nz.delta);
+  auto done = [&]() -> G1HermiteResult& {
+    sum.evaluations += nz.evaluations;
+    sum.constructions += nz.constructions;
+    sum.seconds = seconds_since(t_begin);
+    return res;
+  };
+  auto refuse = [&](std::string why) -> G1HermiteResult& {
+    res.conclude(Status::no_solution, "g1: " + std::move(why));
+    return done();
+  };
+
+  // Straight data: the line (κ ≡ 0), for every α.
+  if (nz.phi0 == 0 && phi1 == 0 && o.winding == 0) {
+    Trial t;
+    t.ok = true;
+    t.I = 1.0;
+    finish(res, pr, o, nz, t, 0);
+    return done();
+  }
+  // α ≥ 0: κ keeps its sign, so φ is strictly monotonic and the turning is not 0.
+  if (pr.alpha >= 0) {
+    if (nz.delta == 0)
+      return refuse("alpha >= 0: the turning theta1 - theta0 is 0 (with this winding) but kappa cannot vanish or "
+                    "change sign, so every curve of this slope turns");
+    // A convex arc turning |Δ| ≤ π has its chord strictly between its end tangents.
+    if (std::abs(nz.delta) <= kPi && !(nz.delta > 0 ? (nz.phi0 < 0 && phi1 + 2 * kPi * o.winding > 0)
+                                                     : (nz.phi0 > 0 && phi1 + 2 * kPi * o.winding < 0)))
+      return refuse("alpha >= 0: the data need an inflection (tangents on the same side of the chord, or one along "
+                    "it) and kappa cannot change sign: a convex curve turning at most pi has its chord strictly "
+                    "between its end tangents");
+  }
+
+  // The paper methods.
+  if (o.solver == "triangle" || o.solver == "s-curve") {
+    const bool convex = res.info.shape == G1Shape::convex && o.winding == 0;
+    const bool s = res.info.shape == G1Shape::s_shaped && o.winding == 0 && pr.alpha < 0;
+    if (o.solver == "triangle" && !convex)
+      throw_input_error("g1", "solver", "'triangle' (001) handles tangents on opposite sides of the chord with "
+                                        "|turning| < pi and winding 0 only; use 'auto'");
+    if (o.solver == "s-curve" && !s)
+      throw_input_error("g1", "solver", "'s-curve' (004) handles alpha < 0 with both tangents on the same side of the "
+                                        "chord and winding 0 only; use 'auto'");
+    const Complex t0 = std::polar(1.0, pr.theta0), t1 = std::polar(1.0, pr.theta1);
+    PlanarCurve curve;
+    Summary paper;
+    if (o.solver == "triangle") {
+      // Tangent intersection a1 = p0 + μ t0 = p1 − ν t1 (μ, ν > 0 for convex data).
+      const double cross = (std::conj(t0) * t1).imag();
+      const double mu = (std::conj(d) * t1).imag() / cross;
+      TriangleOptions to;
+      to.integrator = o.integrator;
+      TriangleResult tr = solve_g1({pr.p0, pr.p0 + mu * t0, pr.p1}, pr.alpha, to);
+      curve = tr.curve;
+      paper = tr.summary;
+    } else {
+      const double r = std::abs(d) / 3;
+      SCurveOptions so;
+      so.integrator = o.integrator;
+      SCurveResult sr = solve_s_curve({pr.p0, pr.p0 + r * t0, pr.p1 - r * t1, pr.p1}, pr.alpha, so);
+      curve = sr.curve;
+      paper = sr.summary;
+    }
+    const std::string solver = sum.solver, integrator = sum.integrator;
+    sum = paper;
+    sum.solver = solver;
+    sum.integrator = integrator;
+    if (paper.usable()) {
+      res.curve = curve;
+      res.info.length = curve.length();
+      res.info.turning = curve.theta_at(curve.length()) - curve.theta_at(0);
+      for (const LaSegment& seg : curve.segments())
+        if (auto s_in = seg.inflection_s()) res.info.inflection = *s_in;
+    }
+    sum.seconds = seconds_since(t_begin);
+    return res;
+  }
+
+  // The reduced equation f(x) = 0: domain and guess.
+  double xmin = -HUGE_VAL, xmax = HUGE_VAL, x0 = 0, step = 0.5;
+  if (pr.alpha == 0) {
+    xmin = -700;
+    xmax = 700;
+    x0 = exponential_guess(nz.phi0, nz.delta);
+    step = 1;
+  } else if (pr.alpha > 0) {
+    xmin = -700;
+    xmax = 700;
+    // log(qb/qa) = −α log(κb/κa); the small-angle b0 beyond |b| = 12 (turning gathered within 1/12
+    // of an end) lands in the flat tail of f, where Newton creeps (α = 0.5: up to 15 steps).
+    x0 = -pr.alpha * std::clamp(exponential_guess(nz.phi0, nz.delta), -12.0, 12.0);
+    step = 1;
+    if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
+      // The shapes run from κ = ∞ at the start (x → ∞, φ = φ0 + Δu^p) to κ = ∞ at the end; their
+      // end-point direction is monotonic in x (docs/g1_hermite.md), so f must change sign
+      // between the two limits.
+      const double p = 1 - 1 / pr.alpha;
+      const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
+      const double f_start = (std::polar(1.0, nz.phi0) * J).imag();
+      const double f_end = (std::polar(1.0, nz.phi0 + nz.delta) * std::conj(J)).imag();
+      if ((f_start > 1e-12 && f_end > 1e-12) || (f_start < -1e-12 && f_end < -1e-12))
+        return refuse("alpha > 1: the chord direction is outside the range of end-point directions of the curves of "
+                      "this slope and turning (its limits, the curves with infinite curvature at one end, lie on one "
+                      "side of the chord: f = " + format_number(f_start) + ", " + format_number(f_end) + ")");
+    }
+  } else {
+    x0 = power_guess(pr.alpha, nz.phi0, nz.delta);
+  }
+
+  Trial best;
+  double xbest = x0;
+  bool converged = false;
+  if (o.solver == "auto") {
+    // Newton, each step limited to 2π in x and kept inside the domain; once two iterates have
+    // opposite signs of f the step is kept inside their bracket (bisection otherwise).
+    // α ≥ 0: f increases with x when Δ > 0 (x → ∞ puts the turning at the start, so the chord
+    // tends to the end tangent, f → |I| sin φ1), decreases when Δ < 0: a step the derivative gets
+    // wrong (flat tails) is replaced by a doubling step toward the root.
+    // α = 0: x = b = log(κb/κa) runs the other way.
+    const double rising = pr.alpha == 0 ? (nz.delta > 0 ? -1.0 : 1.0) : pr.alpha > 0 ? (nz.delta > 0 ? 1.0 : -1.0) : 0.0;
+    double x = x0, xp = kNaN, fp = kNaN, blo = kNaN, bhi = kNaN, flo = kNaN, jump = 1;
+    for (int it = 0; it < o.max_iterations; ++it) {
+      ++sum.iterations;
+      const Trial t = nz.evaluate(x);
+      if (!t.ok) {  // no curve here (e.g. beyond the turning the kernel resolves): back off
+        const double back = std::isfinite(blo) ? 0.5 * (blo + bhi) : 0.5 * (x + (std::isfinite(xp) ? xp : x0));
+        if (back == x) break;
+        x = back;
+        continue;
+      }
+      if (!best.ok || std::abs(t.f) < std::abs(best.f)) best = t, xbest = x;
+      if (std::abs(t.f) <= o.tolerance && t.I.real() > 0) {
+        converged = true;
+        break;
+      }
+      if (std::isfinite(blo)) {
+        if ((t.f > 0) == (flo > 0)) blo = x, flo = t.f;
+        else bhi = x;
+      } else if (std::isfinite(fp) && (t.f > 0) != (fp > 0)) {
+        blo = xp, flo = fp, bhi = x;
+      }
+      xp = x;
+      fp = t.f;
+      double next = x - t.f / t.df;
+      if (!std::isfinite(next)) next = x + (t.f > 0 ? -step : step);
+      if (rising != 0 && !std::isfinite(blo) && (t.df * rising <= 0 || std::abs(next - x) > 2 * kPi)) {
+        next = x - (t.f > 0 ? 1.0 : -1.0) * rising * jump;
+        jump *= 2;
+      } else {
+        next = std::clamp(next, x - 2 * kPi, x + 2 * kPi);
+      }
+      if (!(next > xmin && next < xmax)) next = 0.5 * (x + (next <= xmin ? xmin : xmax));
+      if (std::isfinite(blo) && !(next > std::min(blo, bhi) && next < std::max(blo, bhi))) next = 0.5 * (blo + bhi);
+      if (next == x) break;
+      x = next;
+    }
+  }
+  if (!converged) {
+    // A sign bracket around the guess, then the chosen root method (auto: TOMS 748).
+    int used = 0;
+    const Found b = find_bracket(nz, x0, xmin, xmax, step, o.max_bracket_steps, used);
+    sum.iterations += used;
+    if (b.ok) {
+      const RootMethod m = o.solver == "auto" ? RootMethod::toms748 : parse_root_method(o.solver);
+      RootOptions ro;
+      ro.x_rtol = 1e-15;
+      ro.x_atol = 1e-300;
+      ro.f_atol = o.tolerance;
+      ro.max_iterations = o.max_iterations;
+      auto f = [&](double x) {
+        const Trial t = nz.evaluate(x);
+        return t.ok ? t.f : kNaN;
+      };
+      const RootResult rr = find_root(m, f, Bracket{b.lo, b.hi, b.flo, b.fhi}, ro);
+      sum.iterations += rr.iterations;
+      if (std::isfinite(rr.root)) {
+        const Trial t = nz.evaluate(rr.root);
+        if (t.ok) {
+          best = t;
+          xbest = rr.root;
+          converged = std::abs(t.f) <= std::max(o.tolerance, 1e-3 * o.accept) && t.I.real() > 0;
+        }
+      }
+    } else if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
+      // See docs/g1_hermite.md: β(a) is monotonic and its limits are the directions of the two
+      // curves with κ = ∞ at one end; the bracket search reached both without a sign change.
+    }
+  }
+  if (!converged) {
+    if (best.ok && std::abs(best.f) <= o.accept && best.I.real() > 0) {
+      finish(res, pr, o, nz, best, xbest);
+      return done();
+    }
+    res.conclude(Status::not_converged,
+                 "g1: no root of the reduced equation found (best |f| = " + format_number(best.ok ? std::abs(best.f) : kNaN) +
+                     "); for alpha >= 0 the root may need an end-curvature ratio beyond e^700");
+    return done();
+  }
+  finish(res, pr, o, nz, best, xbest);
+  return done();
+}
+
+}  // namespace lac

@@ -1,0 +1,101 @@
+#pragma once
+// G1 Hermite interpolation by one LA segment of given slope α: end points P0, P1 and end tangent
+// angles θ0, θ1, any configuration (convex, convex with an inflection, S-shaped, parallel or
+// anti-parallel tangents, any turning a curve of slope α can make). docs/g1_hermite.md has the
+// derivations, the no-solution proofs and the measurements.
+//
+// Method. In the chord frame (P0 = 0, P1 = 1, angles φ0, φ1 relative to the chord, each in
+// (−π, π]) the segment runs over u ∈ [0, 1] (u = s/L) in the linear-q form of
+// curves/planar/la_law.hpp, q(u) = m + c(2u − 1). The turning φ(1) − φ(0) = Δ = φ1 − φ0 + 2πk
+// (k = G1HermiteOptions::winding) fixes the amplitude of (m, c) in closed form, because K is
+// homogeneous (K(λq) = λ^(−1/α) K(q)); what is left is ONE equation in one shape variable x,
+//   f(x) = Im ∫₀¹ e^{iφ(u; x)} du = 0,  Re ∫ > 0,  L = |P1 − P0| / Re ∫,
+// as [Bertolazzi–Frego 2015] reduce the clothoid to one equation in A. x is
+//   α < 0: a ∈ ℝ with (m, c) ∝ (Δ, a) (α = −1: exactly their A, φ = φ0 + (Δ − A)u + Au²);
+//   α > 0: a ∈ (−|Δ|, |Δ|) (q keeps its sign);  α = 0: b, κ = κ0 e^{bu}.
+// f and f' come from one Gauss–Legendre pass (f' by forward-mode differentiation of the
+// integrand), split and graded at the inflection (the zero of q, closed form), geometric panels
+// toward an end where κ is steep; Newton from a small-angle guess, safeguarded by a sign bracket.
+// Of the curves with turning Δ the one returned is the root of f reached from that guess (no
+// internal loop on ordinary data); another winding is asked for with `winding`.
+//
+//   lac::G1HermiteOptions o;  o.winding = 1;                       // one more left turn
+//   auto r = lac::solve_g1_hermite({{0, 0}, 0.3, {1, 0}, -0.4, -1.0}, o);
+//   if (r.usable()) { r.curve.length(); r.info.shape; r.info.inflection; r.curve.sample(100); }
+#include <complex>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "lac/common/summary.hpp"
+#include "lac/curves/planar/planar_curve.hpp"
+#include "lac/integrators/registry.hpp"
+
+namespace lac {
+
+constexpr double kG1MaxAbsAlpha = 5.0;   ///< |α| ≤ 5, as the G2 construction
+constexpr double kG1MinAbsAlpha = 0.1;  ///< α = 0 or |α| ≥ 0.1 (the shapes need |q|^(−1/α) beyond double below)
+
+struct G1HermiteProblem {
+  std::complex<double> p0;
+  double theta0 = 0;  ///< tangent angle at p0 (rad)
+  std::complex<double> p1;
+  double theta1 = 0;  ///< tangent angle at p1 (rad)
+  double alpha = -1;  ///< slope of the LCG: 0 or 0.1 ≤ |α| ≤ 5
+};
+
+/// straight: κ ≡ 0 (φ0 = φ1 = 0). convex: no inflection, |turning| < π. convex_inflection: an
+/// inflection although the tangents lie on opposite sides of the chord. s_shaped: tangents on the
+/// same side of the chord (an inflection is needed). other: |turning| ≥ π (loops, windings), a
+/// tangent along the chord with the other not. Of a refusal: the input's class.
+enum class G1Shape { straight, convex, convex_inflection, s_shaped, other };
+std::string_view to_string(G1Shape s);
+
+struct G1SolverInfo {
+  std::string_view name;
+  std::string_view description;
+};
+/// auto, bisection, secant, toms748, ceres, triangle, s-curve (for CLI help).
+std::span<const G1SolverInfo> g1_hermite_solvers();
+
+struct G1HermiteOptions {
+  /// "auto": safeguarded Newton on f with its analytic derivative (the fast path). A name of the
+  /// 1-D root registry (solvers/root_1d.hpp: bisection, secant, toms748, ceres): that method on f
+  /// in the sign bracket found around the guess. "triangle": 001's similar-triangle search
+  /// (constructions/triangle_g1.hpp), tangents on opposite sides of the chord, |turning| < π only.
+  /// "s-curve": 004's Λ search (constructions/s_curve.hpp), α < 0 and tangents on one side only.
+  std::string solver = "auto";
+  /// Used to verify the returned curve's end point when `verify` is set (summary.residuals and
+  /// error_estimate; also the trial integrals of "triangle" and "s-curve"). The solve itself always
+  /// runs on the built-in Gauss–Legendre kernel, which differentiates f.
+  AnyQuadrature integrator = GaussLegendre{};
+  bool verify = false;
+  int winding = 0;            ///< turning target Δ + 2πk, k ∈ [−100, 100]
+  double tolerance = 1e-13;   ///< on |f| (end point off the chord, chord units), [1e-16, 1e-3]
+  int max_iterations = 60;    ///< Newton / root-finder steps, [1, 10000]
+  int max_bracket_steps = 400;  ///< trial points of the bracket search, [1, 100000]
+  double accept = 1e-10;      ///< largest residual (chord units, rad) for status ok, [tolerance, 1]
+  void validate() const;      ///< InputError naming the option
+};
+
+struct G1HermiteInfo {
+  G1Shape shape = G1Shape::convex;
+  double turning = 0;                ///< Δ = θ(L) − θ(0) (rad)
+  std::optional<double> inflection;  ///< arc length of the inflection, if any
+  double phi0 = 0, phi1 = 0;         ///< end tangents relative to the chord, in (−π, π]
+  double qa = 0, qb = 0;             ///< the segment's q at u = 0 and u = 1 (u = s/L)
+  double length = 0;                 ///< L (user units)
+  double x = 0;                      ///< the shape variable at the solution (a or b, above)
+};
+
+using G1HermiteResult = Result<PlanarCurve, G1HermiteInfo>;
+
+/// The curve: one LaSegment on u ∈ [0, 1] placed at p0 with scale L and the chord's direction (a
+/// straight line for α ≥ 0 is a segment of α = −1 with κ ≡ 0: the common limit of every α).
+/// Summary: iterations, evaluations (integrand calls), constructions (trial shapes), residuals
+/// position (user units) and angle. Throws InputError for non-finite data, coincident points, α
+/// outside its range, bad options; no_solution only with a proof in the message.
+G1HermiteResult solve_g1_hermite(const G1HermiteProblem& problem, const G1HermiteOptions& options = {});
+
+}  // namespace lac

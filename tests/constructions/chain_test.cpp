@@ -1,0 +1,141 @@
+// LA chains (constructions/chain.hpp): the three-point frame estimate, G1 and G2 chains through
+// points on a circle (exactly the circle), closed chains, failure propagation, bad input.
+#include "lac/constructions/chain.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "tests/support/input_error.hpp"
+
+namespace lac {
+namespace {
+
+using std::numbers::pi;
+using P = std::complex<double>;
+
+double wrap(double a) { return std::remainder(a, 2 * pi); }
+
+// n points on the circle of radius R about c, counter-clockwise from angle a0 by step da.
+std::vector<P> on_circle(int n, double R, P c, double a0, double da) {
+  std::vector<P> v;
+  for (int k = 0; k < n; ++k) v.push_back(c + std::polar(R, a0 + k * da));
+  return v;
+}
+
+// Eight points around an irregular closed loop (the figure's input).
+std::vector<P> loop8() { return {{0, 0}, {2, -0.5}, {4, 0.3}, {5, 2}, {4, 4}, {2, 4.6}, {0.2, 3.8}, {-0.8, 2}}; }
+
+TEST(ChainFrames, ExactOnACircle) {
+  const auto pts = on_circle(5, 2.0, {1, -1}, 0.3, 0.4);
+  const auto f = estimate_frames(pts, false);
+  ASSERT_EQ(f.size(), pts.size());
+  for (size_t k = 0; k < pts.size(); ++k) {
+    EXPECT_NEAR(wrap(f[k].theta - (0.3 + 0.4 * k + pi / 2)), 0.0, 1e-14) << k;
+    EXPECT_NEAR(f[k].kappa, 0.5, 1e-14) << k;
+  }
+  // Clockwise: curvature −1/R, tangent reversed.
+  std::vector<P> cw(pts.rbegin(), pts.rend());
+  const auto g = estimate_frames(cw, false);
+  for (size_t k = 0; k < cw.size(); ++k) EXPECT_NEAR(g[k].kappa, -0.5, 1e-14) << k;
+  EXPECT_NEAR(wrap(g[0].theta - (0.3 + 0.4 * 4 - pi / 2)), 0.0, 1e-14);
+}
+
+TEST(ChainFrames, LineAndTwoPoints) {
+  const std::vector<P> line{{0, 0}, {1, 1}, {3, 3}, {4, 4}};
+  for (const auto& f : estimate_frames(line, false)) {
+    EXPECT_NEAR(f.theta, pi / 4, 1e-15);
+    EXPECT_EQ(f.kappa, 0.0);
+  }
+  const std::vector<P> two{{1, 1}, {1, 3}};
+  const auto f = estimate_frames(two, false);
+  EXPECT_NEAR(f[0].theta, pi / 2, 1e-15);
+  EXPECT_NEAR(f[1].theta, pi / 2, 1e-15);
+}
+
+// Points on a circle with the circle's tangents: every pair's least-turning LA segment is the
+// circular arc (κ constant is an LA curve of every α), so the chain is the circle.
+TEST(Chain, G1OnACircleIsTheCircle) {
+  for (double alpha : {-1.0, -0.5, 0.0, 1.0, 2.0}) {
+    ChainProblem p{.points = on_circle(6, 1.5, {0, 0}, 0.0, 0.5), .alpha = alpha};
+    const ChainResult r = solve_chain(p);
+    ASSERT_TRUE(r.usable()) << alpha << ": " << r.summary.message;
+    EXPECT_TRUE(r.info.estimated_thetas);
+    EXPECT_EQ(r.curve.segments().size(), 5u);
+    EXPECT_NEAR(r.curve.length(), 1.5 * 0.5 * 5, 1e-10) << alpha;
+    for (double t : {0.0, 0.13, 0.5, 0.77, 1.0}) EXPECT_NEAR(r.curve.kappa_at(t * r.curve.length()), 1 / 1.5, 1e-9) << alpha;
+  }
+}
+
+TEST(Chain, ClosedG1ChainIsG1AndTurnsOnce) {
+  for (double alpha : {-1.0, -0.3}) {
+    ChainProblem p{.points = loop8(), .alpha = alpha, .closed = true};
+    const ChainResult r = solve_chain(p);
+    ASSERT_TRUE(r.usable()) << alpha << ": " << r.summary.message;
+    ASSERT_EQ(r.info.pairs.size(), 8u);
+    EXPECT_EQ(r.curve.segments().size(), 8u);
+    for (const Joint& j : r.curve.joints()) {
+      EXPECT_LT(j.position_gap, 1e-10 * 5);
+      EXPECT_LT(std::abs(j.angle_gap), 1e-10);
+    }
+    // Back at the start, in the start direction, one full turn.
+    const PositionResult end = position_at(r.curve, r.curve.length());
+    EXPECT_LT(std::abs(end.point.position - loop8()[0]), 1e-10 * 5);
+    EXPECT_NEAR(r.curve.theta_at(r.curve.length()) - r.curve.theta_at(0), 2 * pi, 1e-10);
+  }
+}
+
+TEST(Chain, GivenTangentsAreMet) {
+  const std::vector<P> pts{{0, 0}, {1, 0.5}, {2, 0}, {3, 0.4}};
+  const std::vector<double> th{0.2, -0.3, 0.1, 0.6};
+  ChainProblem p{.points = pts, .thetas = th, .alpha = -1};
+  const ChainResult r = solve_chain(p);
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  EXPECT_FALSE(r.info.estimated_thetas);
+  for (size_t k = 0; k < pts.size(); ++k) {
+    const double s = r.curve.segment_start(k);
+    EXPECT_NEAR(wrap(r.curve.theta_at(s) - th[k]), 0.0, 1e-10) << k;
+    EXPECT_LT(std::abs(position_at(r.curve, s).point.position - pts[k]), 1e-10) << k;
+  }
+}
+
+TEST(Chain, G2ChainIsCurvatureContinuous) {
+  ChainProblem p{.points = loop8(), .alpha = -0.5, .continuity = ChainContinuity::g2, .closed = true};
+  const ChainResult r = solve_chain(p);
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  EXPECT_EQ(r.curve.segments().size(), 3u * 8u);
+  for (const Joint& j : r.curve.joints()) {
+    EXPECT_LT(j.position_gap, 1e-9);
+    EXPECT_LT(std::abs(j.angle_gap), 1e-9);
+    EXPECT_LT(std::abs(j.curvature_gap), 1e-8);
+  }
+  for (size_t k = 0; k < 8; ++k) EXPECT_NEAR(r.curve.kappa_at(r.curve.segment_start(3 * k)), r.info.kappas[k], 1e-8) << k;
+}
+
+// α > 0: κ cannot change sign, so an S-shaped pair has no curve; the chain names the pair.
+TEST(Chain, APairWithoutCurveFailsTheChain) {
+  ChainProblem p{.points = {{0, 0}, {1, 0}, {2, 0}}, .thetas = {0.2, -0.2, -0.4}, .alpha = 1.0};
+  const ChainResult r = solve_chain(p);
+  EXPECT_FALSE(r.usable());
+  EXPECT_EQ(r.summary.status, Status::no_solution);
+  EXPECT_EQ(r.info.failed_pair, 1);
+  EXPECT_NE(r.summary.message.find("pair 1"), std::string::npos) << r.summary.message;
+  EXPECT_TRUE(r.curve.segments().empty());
+}
+
+TEST(Chain, BadInputNamesTheParameter) {
+  using test::thrown_parameter;
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}}}); }), "points");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {1, 0}}, .closed = true}); }), "points");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {0, 0}, {1, 0}}}); }), "points");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {NAN, 0}}}); }), "points");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {1, 0}}, .thetas = {0.0}}); }), "thetas");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {1, 0}}, .kappas = {0.0, 1.0}}); }), "kappas");
+  EXPECT_EQ(thrown_parameter([] { solve_chain({.points = {{0, 0}, {1, 0}}, .alpha = INFINITY}); }), "alpha");
+  EXPECT_EQ(thrown_parameter([] { parse_chain_continuity("g3"); }), "continuity");
+}
+
+}  // namespace
+}  // namespace lac
