@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <boost/math/quadrature/gauss.hpp>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -13,6 +12,7 @@
 #include "lac/constructions/detail/tangent_integral.hpp"
 #include "lac/constructions/s_curve.hpp"
 #include "lac/constructions/triangle_g1.hpp"
+#include "lac/integrators/gauss_legendre.hpp"
 #include "lac/solvers/root_1d.hpp"
 
 namespace lac {
@@ -40,27 +40,6 @@ Dual dual_pow(Dual a, double e) {  // a > 0
 }
 Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
 
-// Gauss–Legendre rules on [0, 1] (Boost.Math's tables).
-template <int N>
-struct Rule {
-  std::array<double, N> x{}, w{};
-};
-template <int N>
-const Rule<N>& rule() {
-  static const Rule<N> r = [] {
-    using G = boost::math::quadrature::gauss<double, N>;
-    Rule<N> out;
-    const auto& a = G::abscissa();
-    const auto& b = G::weights();
-    for (size_t k = 0; k < a.size(); ++k) {
-      out.x[k] = 0.5 * (1.0 - a[k]);
-      out.x[N - 1 - k] = 0.5 * (1.0 + a[k]);
-      out.w[k] = out.w[N - 1 - k] = 0.5 * b[k];
-    }
-    return out;
-  }();
-  return r;
-}
 constexpr int kN = 20;             // nodes per panel of the general kernel
 constexpr double kPanelTurn = 6;   // radians of φ per 20-node panel (error ≲ 1e-15)
 constexpr int kMaxPanels = 256;
@@ -122,32 +101,6 @@ struct Power {
   }
 };
 
-// t^e at the nodes of `panels` equal 20-node panels on [0, 1] (graded pieces from an inflection, the
-// α > 1 limits): they depend on α and the panel count only, so they are computed once per thread.
-// The entry returned last is never the one replaced next, so two lookups in a row stay valid.
-const std::vector<double>& graded_powers(double e, int panels) {
-  struct Entry {
-    double e = kNaN;
-    int panels = 0;
-    std::vector<double> v;
-  };
-  thread_local std::array<Entry, 8> cache;
-  thread_local size_t next = 0;
-  for (size_t j = 0; j < cache.size(); ++j)
-    if (cache[j].e == e && cache[j].panels == panels) {
-      if (next % cache.size() == j) ++next;
-      return cache[j].v;
-    }
-  Entry& c = cache[next++ % cache.size()];
-  const Rule<kN>& g = rule<kN>();
-  c.e = e;
-  c.panels = panels;
-  c.v.resize(static_cast<size_t>(kN * panels));
-  for (int p = 0; p < panels; ++p)
-    for (int k = 0; k < kN; ++k) c.v[static_cast<size_t>(kN * p + k)] = std::pow((p + g.x[k]) / panels, e);
-  return c.v;
-}
-
 // ∫₀¹ e^{iφ} du and its derivative in x.
 struct Integral {
   Complex I, dI;
@@ -163,10 +116,10 @@ int panels_for(double turning) {
 // node(t, w) over `panels` equal N-node Gauss–Legendre panels of [t0, t1]; returns the node count.
 template <int N, class Node>
 long gauss_panels(double t0, double t1, int panels, Node&& node) {
-  const Rule<N>& g = rule<N>();
+  const GaussLegendreRule<N>& g = gauss_legendre_rule<N>();
   const double h = (t1 - t0) / panels;
   for (int p = 0; p < panels; ++p)
-    for (int k = 0; k < N; ++k) node(t0 + (p + g.x[k]) * h, g.w[k] * h);
+    for (int k = 0; k < N; ++k) node(t0 + (p + g.nodes[k]) * h, g.weights[k] * h);
   return static_cast<long>(N) * panels;
 }
 // The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on [t0, t1]: 12, 16 or 20 nodes
@@ -217,14 +170,14 @@ struct Normalized {
   // Gauss–Legendre error of e^{iφ} below 1e-14 for it up to 4.5, 9, 13 rad.
   template <int N>
   Integral clothoid_rule(double A, int panels) {
-    const Rule<N>& g = rule<N>();
+    const GaussLegendreRule<N>& g = gauss_legendre_rule<N>();
     Integral r;
     const double h = 1.0 / panels;
     for (int p = 0; p < panels; ++p)
       for (int k = 0; k < N; ++k) {
-        const double u = (p + g.x[k]) * h, dphi = u * (u - 1);
+        const double u = (p + g.nodes[k]) * h, dphi = u * (u - 1);
         const double phi = phi0 + delta * u + A * dphi;
-        const Complex e = std::polar(g.w[k] * h, phi);
+        const Complex e = std::polar(g.weights[k] * h, phi);
         r.I += e;
         r.dI += Complex(0, dphi) * e;
       }
@@ -326,7 +279,7 @@ struct Normalized {
     auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
       const Dual span = Dual{e, 0} - ustar;
       const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
-      const std::vector<double>* powers = t0.v == 0 ? &graded_powers(4 * law.p, panels) : nullptr;
+      const std::vector<double>* powers = t0.v == 0 ? &gauss_legendre_20_node_powers(4 * law.p, panels) : nullptr;
       Integral piece;
       const Dual len = 1.0 + (-t0), inv = Dual{1, 0} / (2.0 * c), a0 = phi0 + (-Fa) * inv, a1 = Fe * inv, jac = 4.0 * span;
       size_t k = 0;
@@ -391,8 +344,8 @@ struct Normalized {
 Complex power_limit_integral(double delta, double p, long& evaluations) {
   const double k = std::max(4.0, std::ceil(4 / p));
   const int panels = panels_for(delta);
-  const std::vector<double>& jac = graded_powers(k - 1, panels);
-  const std::vector<double>& phase = graded_powers(k * p, panels);
+  const std::vector<double>& jac = gauss_legendre_20_node_powers(k - 1, panels);
+  const std::vector<double>& phase = gauss_legendre_20_node_powers(k * p, panels);
   Complex sum;
   size_t i = 0;
   evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {

@@ -1,6 +1,10 @@
 #include "lac/integrators/gauss_legendre.hpp"
 
+#include <array>
 #include <boost/math/quadrature/gauss.hpp>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 namespace lac {
 namespace {
@@ -22,14 +26,38 @@ GaussLegendreRule<N> make_rule() {
 
 }  // namespace
 
-const GaussLegendreRule<20>& gauss_legendre_20() {
-  static const GaussLegendreRule<20> r = make_rule<20>();
+template <std::size_t N>
+const GaussLegendreRule<N>& gauss_legendre_rule() {
+  static const GaussLegendreRule<N> r = make_rule<N>();
   return r;
 }
+template const GaussLegendreRule<10>& gauss_legendre_rule<10>();
+template const GaussLegendreRule<12>& gauss_legendre_rule<12>();
+template const GaussLegendreRule<16>& gauss_legendre_rule<16>();
+template const GaussLegendreRule<20>& gauss_legendre_rule<20>();
 
-const GaussLegendreRule<10>& gauss_legendre_10() {
-  static const GaussLegendreRule<10> r = make_rule<10>();
-  return r;
+const std::vector<double>& gauss_legendre_20_node_powers(double beta, int panels) {
+  struct Entry {
+    double beta = std::numeric_limits<double>::quiet_NaN();
+    int panels = 0;
+    std::vector<double> values;
+  };
+  thread_local std::array<Entry, 16> cache;
+  thread_local std::size_t next = 0;
+  for (std::size_t j = 0; j < cache.size(); ++j)
+    if (cache[j].beta == beta && cache[j].panels == panels) {
+      if (next % cache.size() == j) ++next;  // the entry returned last is never replaced next
+      return cache[j].values;
+    }
+  Entry& e = cache[next++ % cache.size()];
+  const GaussLegendreRule<20>& g = gauss_legendre_20();
+  e.beta = beta;
+  e.panels = panels;
+  e.values.resize(20 * static_cast<std::size_t>(panels));
+  for (int panel = 0; panel < panels; ++panel)
+    for (std::size_t k = 0; k < 20; ++k)
+      e.values[20 * static_cast<std::size_t>(panel) + k] = std::pow((panel + g.nodes[k]) / panels, beta);
+  return e.values;
 }
 
 }  // namespace lac

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <limits>
 #include <string_view>
+#include <vector>
 
 #include "lac/integrators/quadrature.hpp"
 
@@ -20,10 +21,19 @@ struct GaussLegendreRule {
   std::array<double, N> weights{};  ///< sum to 1
 };
 
-/// The 20-point rule on [0, 1], built once.
-const GaussLegendreRule<20>& gauss_legendre_20();
-/// The 10-point rule on [0, 1] (the error estimate of GaussLegendre), built once.
-const GaussLegendreRule<10>& gauss_legendre_10();
+/// The N-point rule on [0, 1], built once; N ∈ {10, 12, 16, 20}.
+template <std::size_t N>
+const GaussLegendreRule<N>& gauss_legendre_rule();
+/// The 20-point rule on [0, 1].
+inline const GaussLegendreRule<20>& gauss_legendre_20() { return gauss_legendre_rule<20>(); }
+/// The 10-point rule on [0, 1] (the error estimate of GaussLegendre).
+inline const GaussLegendreRule<10>& gauss_legendre_10() { return gauss_legendre_rule<10>(); }
+
+/// t^β at the nodes t = (panel + x_k)/panels of the 20-point rule on `panels` equal panels of
+/// [0, 1] (index 20·panel + k). Graded integrals (t^β substitutions near an inflection or a steep
+/// end) need them at one β for every trial of a solve, so they are kept per thread. The entry
+/// returned last is never the one replaced next: two lookups in a row stay valid together.
+const std::vector<double>& gauss_legendre_20_node_powers(double beta, int panels);
 
 /// Composite 20-point Gauss–Legendre on `panels` equal panels (exact for polynomials of degree 39
 /// on each). Error estimate: the difference from the 10-point rule on the same panels (10 more

@@ -55,32 +55,8 @@ std::complex<double> plain(const Phi& phi, double u0, double e, int panels, long
   return sum;
 }
 
-// t^β at the nodes t = (panel + x_k)/panels of `panels` equal panels on [0, 1]. They depend on
-// α and the panel count only, so a solve at one α (every root-finder step of an S-curve, every
-// Newton step of a G2 problem) computes them once per thread.
-const std::vector<double>& node_powers(double beta, int panels) {
-  struct Entry {
-    double beta = NAN;
-    int panels = 0;
-    std::vector<double> values;
-  };
-  thread_local std::array<Entry, 16> cache;
-  thread_local size_t next = 0;
-  for (const Entry& e : cache)
-    if (e.beta == beta && e.panels == panels) return e.values;
-  Entry& e = cache[next++ % cache.size()];
-  const GaussLegendreRule<20>& g = gauss_legendre_20();
-  e.beta = beta;
-  e.panels = panels;
-  e.values.resize(20 * static_cast<size_t>(panels));
-  for (int panel = 0; panel < panels; ++panel)
-    for (size_t k = 0; k < 20; ++k)
-      e.values[20 * static_cast<size_t>(panel) + k] = std::pow((panel + g.nodes[k]) / panels, beta);
-  return e.values;
-}
-
 // A graded piece (TangentPiece) with φ in closed form: the same nodes and weights as a plain
-// piece in t, without a power per node when t0 = 0 (node_powers).
+// piece in t, without a power per node when t0 = 0 (gauss_legendre_20_node_powers).
 std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& evaluations,
                                       std::complex<double>* coarse) {
   const GaussLegendreRule<20>& g = gauss_legendre_20();
@@ -92,7 +68,7 @@ std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& e
   }
   panels = std::max(panels, static_cast<int>(std::min(64.0, std::ceil(turning))));
   const double span = (1.0 - t0) / panels;
-  const std::vector<double>* powers = t0 == 0 ? &node_powers(beta, panels) : nullptr;
+  const std::vector<double>* powers = t0 == 0 ? &gauss_legendre_20_node_powers(beta, panels) : nullptr;
   std::complex<double> sum{};
   for (int panel = 0; panel < panels; ++panel) {
     const double a = t0 + panel * span;
