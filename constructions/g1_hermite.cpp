@@ -195,6 +195,64 @@ struct Normalized {
   // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
   // node: the denominator expm1(−|b|) is per evaluation.
   bool exponential(double b, Integral& r, Trial& t) {
+    if (std::abs(b) >= 1e-3) exponential_far(b, r);
+    else exponential_near(b, r);
+    // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
+    const double lr = b == 0 ? 0.0
+                      : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
+                              : std::log(-b) - std::log(-std::expm1(b));
+    t.qa = std::log(std::abs(delta)) + lr;
+    t.qb = t.qa + b;
+    return std::isfinite(t.qa) && std::isfinite(t.qb);
+  }
+
+  // |b| ≥ 1e-3. From the steep end (u = 0 for b < 0; for b > 0 the mirror u ↦ 1 − u, φ0 ↦ φ0 + Δ,
+  // Δ ↦ −Δ) with m = |b| and v = mu: φ = φe + D(1 − e^(−v)), D = Δ/(1 − e^(−m)), I = (1/m)∫₀^m e^{iφ}dv.
+  // Where |D|e^(−v) ≤ 1 (v ≥ V = log|D|) the phase is a power series in e^(−v):
+  // e^{iφ} = e^{i(φe + D)} Σ (−iD)^n e^(−nv)/n!, integrated term by term (≤ 20 terms for 1e-17);
+  // [0, min(V, m)] by Gauss–Legendre (12 nodes for |Δ| ≲ π). The derivative, with V held fixed:
+  // dI/dm = (e^{i(φe ± Δ)} − I)/m + (i D′/m)∫₀^m (1 − e^(−v))e^{iφ}dv, D′ = −D/expm1(m).
+  void exponential_far(double b, Integral& r) {
+    const bool mirror = b > 0;
+    const double m = std::abs(b), phe = mirror ? phi0 + delta : phi0, dl = mirror ? -delta : delta;
+    const double D = dl / -std::expm1(-m), W = std::min(m, std::max(0.0, std::log(std::abs(D))));
+    Complex J0, J1;  // ∫₀^m e^{iφ} dv and ∫₀^m (1 − e^(−v)) e^{iφ} dv
+    if (W > 0)
+      evaluations += gauss_by_omega(0.5 * W * (std::abs(D) + 1), 0.0, W, [&](double v, double wt) {
+        const double g = -std::expm1(-v);
+        const Complex e = std::polar(wt, phe + D * g);
+        J0 += e;
+        J1 += g * e;
+      });
+    if (m > W) {
+      // Σ c_n T_n and Σ c_n T_(n+1), c_n = (−iD)^n/n!, T_k = ∫_W^m e^(−kv)dv = e^(−kW) S_k / k with
+      // S_k = 1 − e^(−kh), h = m − W, by S_(k+1) = S_1 + e^(−h) S_k (no cancellation for small h).
+      const double eW = std::exp(-W), S1 = -std::expm1(-(m - W)), eh = 1 - S1;
+      double pW = eW, Sk = S1;
+      double T_next = pW * Sk;
+      Complex c = 1, A = m - W, B = T_next;
+      const double z = std::abs(D) * eW;  // ≤ 1
+      double bound = 1;
+      for (int n = 1; n <= 30; ++n) {
+        c *= Complex(0, -D / n);
+        A += c * T_next;
+        pW *= eW;
+        Sk = S1 + eh * Sk;
+        T_next = pW * Sk / (n + 1);
+        B += c * T_next;
+        bound *= z / n;
+        if (bound < 1e-18) break;
+      }
+      const Complex e = std::polar(1.0, phe + D);
+      J0 += e * A;
+      J1 += e * (A - B);
+    }
+    r.I = J0 / m;
+    const Complex dI_dm = (std::polar(1.0, phe + dl) - r.I) / m + Complex(0, -D / std::expm1(m)) * J1 / m;
+    r.dI = mirror ? dI_dm : -dI_dm;
+  }
+
+  void exponential_near(double b, Integral& r) {
     const bool series = std::abs(b) < 1e-6, mirror = b > 0;
     const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
     const Dual den{em, (em + 1) * dbeta};
@@ -225,13 +283,6 @@ struct Normalized {
     for (size_t i = 0; i + 1 < cuts.size(); ++i)
       evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
                                       [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
-    // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
-    const double lr = b == 0 ? 0.0
-                      : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
-                              : std::log(-b) - std::log(-std::expm1(b));
-    t.qa = std::log(std::abs(delta)) + lr;
-    t.qb = t.qa + b;
-    return std::isfinite(t.qa) && std::isfinite(t.qb);
   }
 
   // α ≠ 0, −1: (m, c) = λ(s, c̄) with (s, c̄) = (Δ, a)/hypot(Δ, a) and λ from the turning:
@@ -671,11 +722,16 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
 
   // The reduced equation f(x) = 0: domain and guess.
   double xmin = -HUGE_VAL, xmax = HUGE_VAL, x0 = 0, step = 0.5;
+  // α ≥ 0: f at the two limits of x (all turning at one end); NaN where not known.
+  double f_at_xmin = kNaN, f_at_xmax = kNaN;
   if (pr.alpha == 0) {
     xmin = -700;
     xmax = 700;
     x0 = exponential_guess(nz.phi0, nz.delta);
     step = 1;
+    // b → ∞ gathers the turning at the end (the chord tends to the start tangent), b → −∞ at the start.
+    f_at_xmax = std::sin(nz.phi0);
+    f_at_xmin = std::sin(nz.phi0 + nz.delta);
   } else if (pr.alpha > 0) {
     xmin = -700;
     xmax = 700;
@@ -683,6 +739,10 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     // of an end) lands in the flat tail of f, where Newton creeps (α = 0.5: up to 15 steps).
     x0 = -pr.alpha * std::clamp(exponential_guess(nz.phi0, nz.delta), -12.0, 12.0);
     step = 1;
+    if (pr.alpha <= 1) {  // x → −∞: κ = ∞ at the end, x → ∞: at the start
+      f_at_xmin = std::sin(nz.phi0);
+      f_at_xmax = std::sin(nz.phi0 + nz.delta);
+    }
     if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
       // The shapes run from κ = ∞ at the start (x → ∞, φ = φ0 + Δu^p) to κ = ∞ at the end; their
       // end-point direction is monotonic in x (docs/g1_hermite.md), so f must change sign
@@ -691,6 +751,8 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
       const double f_start = (std::polar(1.0, nz.phi0) * J).imag();
       const double f_end = (std::polar(1.0, nz.phi0 + nz.delta) * std::conj(J)).imag();
+      f_at_xmax = f_start;
+      f_at_xmin = f_end;
       if ((f_start > 1e-12 && f_end > 1e-12) || (f_start < -1e-12 && f_end < -1e-12))
         return refuse("alpha > 1: the chord direction is outside the range of end-point directions of the curves of "
                       "this slope and turning (its limits, the curves with infinite curvature at one end, lie on one "
@@ -711,6 +773,12 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     // wrong (flat tails) is replaced by a doubling step toward the root.
     // α = 0: x = b = log(κb/κa) runs the other way.
     const double rising = pr.alpha == 0 ? (nz.delta > 0 ? -1.0 : 1.0) : pr.alpha > 0 ? (nz.delta > 0 ? 1.0 : -1.0) : 0.0;
+    // f runs from f_lo to f_hi (its limits) like a sigmoid: in each tail it approaches its limit
+    // geometrically in x, where plain Newton creeps. Newton on the logit
+    // g = log((f − f_lo)/(f_hi − f)), linear in both tails, has the same root (g = log(−f_lo/f_hi)).
+    const double f_lo = rising > 0 ? f_at_xmin : f_at_xmax, f_hi = rising > 0 ? f_at_xmax : f_at_xmin;
+    const bool logit = rising != 0 && f_lo < 0 && f_hi > 0;
+    const double g_root = logit ? std::log(-f_lo / f_hi) : 0;
     double x = x0, xp = kNaN, fp = kNaN, blo = kNaN, bhi = kNaN, flo = kNaN, jump = 1;
     for (int it = 0; it < o.max_iterations; ++it) {
       ++sum.iterations;
@@ -735,6 +803,10 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       xp = x;
       fp = t.f;
       double next = x - t.f / t.df;
+      if (logit && t.f > f_lo && t.f < f_hi && t.df * rising > 0) {
+        const double a = t.f - f_lo, b = f_hi - t.f;
+        next = x - (std::log(a / b) - g_root) / (t.df * (1 / a + 1 / b));
+      }
       if (!std::isfinite(next)) next = x + (t.f > 0 ? -step : step);
       if (rising != 0 && !std::isfinite(blo) && (t.df * rising <= 0 || std::abs(next - x) > 2 * kPi)) {
         next = x - (t.f > 0 ? 1.0 : -1.0) * rising * jump;
