@@ -344,10 +344,14 @@ struct Normalized {
       r.dI += sign * (len.v * piece.dI + len.d * piece.I);
     };
     // α > 0 with the zero u* of q outside [0, 1] by d < 2: κ is steep at the end next to it. With
-    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
-    // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
-    // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
-    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out, so ≤ ⌈42|p|⌉ panels.
+    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [w0, 0], w0 = log(d/r_B):
+    // |q| = |q_B|e^w, φ = φ_B + a·expm1(pw), a = |q_B|^p/(p·2c) (φ_B + w/(2c) at α = 1),
+    // du = r_B e^w dw — an entire integrand.
+    // Where |a|e^(pw) ≤ 1 (towards the steep end for p > 0, the far end for p < 0) the phase is
+    // a power series: e^{iφ} = e^{i(φ_B − a)} Σ (ia e^(pw))^n/n!, each term e^((1+np)w) integrated
+    // in closed form. The rest by Gauss–Legendre: panels of width ≤ 1/|p| in w keep φ' within a
+    // factor e on each; r < 1e-18 (u-width below 1e-18) is left out. The split between the two is
+    // held fixed in x, so the derivative of the sum is exact.
     auto steep = [&](bool near_start) {
       const Dual two_c = 2.0 * c;
       const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
@@ -355,18 +359,60 @@ struct Normalized {
       const double phiB = near_start ? phi0 + delta : phi0, p = law.p;
       const Dual amp = (law.log_F ? Dual{1, 0} : dual_pow(qB.v < 0 ? -qB : qB, p)) / two_c;
       const Dual w0 = dual_log((d.v > 1e-18 ? d : Dual{1e-18, 0}) / rB);
-      const int panels = std::max(1, static_cast<int>(std::ceil(-w0.v * std::abs(p))));
-      for (int i = 0; i < panels; ++i) {
-        // τ ∈ [0, 1] ↦ w = w0(1 − τ); this panel's τ ∈ [i, i + 1]/panels.
-        const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
-        const double slope = std::abs(amp.v) * std::max(std::exp(p * w0.v * (1 - ta)), std::exp(p * w0.v * (1 - tb)));
-        const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
-        evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
-          const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
-          const double ew = std::exp(w.v), em = law.log_F ? 0.0 : std::expm1(p * w.v);
-          const Dual E = law.log_F ? w : Dual{em / p, (em + 1) * w.d};
-          add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
-        });
+      const auto phase = [&](Dual w) -> Dual {  // φ − φ_B
+        if (law.log_F) return amp * w;
+        const double em = std::expm1(p * w.v);
+        return amp * Dual{em / p, (em + 1) * w.d};
+      };
+      // The split ws: the series covers [w0, ws] (p > 0) or [ws, 0] (p < 0).
+      double ws = p > 0 ? w0.v : 0.0;
+      if (!law.log_F) {
+        const double la = std::log(std::abs(amp.v / p)) / -p;  // |a|e^(p·la) = 1
+        ws = std::clamp(la, w0.v, 0.0);
+      }
+      const Dual split = ws <= w0.v ? w0 : Dual{ws, 0};  // at w0 it moves with w0
+      const Dual q_lo = p > 0 ? split : w0, q_hi = p > 0 ? Dual{0, 0} : split;
+      const Dual span = q_hi - q_lo;
+      if (span.v > 0) {
+        const int panels = std::max(1, static_cast<int>(std::ceil(span.v * std::abs(p))));
+        for (int i = 0; i < panels; ++i) {
+          const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
+          const double wa = q_lo.v + ta * span.v, wb = q_lo.v + tb * span.v;
+          const double slope = std::abs(amp.v) * std::max(std::exp(p * wa), std::exp(p * wb));
+          const double omega = 0.5 * (tb - ta) * span.v * std::hypot(1.0, slope);
+          evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+            const Dual w = q_lo + tau * span;
+            const double ew = std::exp(w.v);
+            add(r, wt * (Dual{ew, ew * w.d} * rB * span), phiB + phase(w));
+          });
+        }
+      }
+      const Dual s_lo = p > 0 ? w0 : split, s_hi = p > 0 ? split : Dual{0, 0};
+      const double h = s_hi.v - s_lo.v;
+      if (!law.log_F && h > 0) {
+        // A = Σ c_n T_n, B = Σ c_n T_(n+1), c_n = (ia)^n/n!, T_k = ∫ e^((1+kp)w) dw over [s_lo, s_hi],
+        // from C_n(w) = c_n e^((1+np)w) at both ends (no overflow of e^(npw) alone).
+        const Complex ia(0, amp.v / p);
+        const double epl = std::exp(p * s_lo.v), eph = std::exp(p * s_hi.v);
+        Complex Cl = std::exp(s_lo.v), Ch = std::exp(s_hi.v), A, B;
+        const auto integral = [&](Complex lo, Complex hi, double k) {  // (hi − lo)/k, lo = hi e^(−kh)
+          return std::abs(k * h) > 0.5 ? (hi - lo) / k : hi * (h * (k * h == 0 ? 1.0 : -std::expm1(-k * h) / (k * h)));
+        };
+        double bound = 1;
+        const double z = std::abs(amp.v / p) * std::max(epl, eph);  // ≤ 1
+        for (int n = 0; n <= 30; ++n) {
+          A += integral(Cl, Ch, 1 + n * p);
+          B += integral(Cl * epl, Ch * eph, 1 + (n + 1) * p);
+          bound *= z / (n + 1);
+          if (bound < 1e-18) break;
+          Cl *= ia * epl / double(n + 1);
+          Ch *= ia * eph / double(n + 1);
+        }
+        const Complex E0 = std::polar(1.0, phiB - amp.v / p);
+        const Complex I = rB.v * E0 * A;
+        r.I += I;
+        const auto f_at = [&](Dual w) { return rB.v * std::exp(w.v) * std::polar(1.0, phiB + phase(w).v); };
+        r.dI += rB.d * E0 * A + rB.v * E0 * Complex(0, amp.d / p) * (B - A) - s_lo.d * f_at(s_lo) + s_hi.d * f_at(s_hi);
       }
     };
     if (alpha < 0 && zero > -0.5 && zero < 1.5) {
