@@ -462,9 +462,12 @@ double power_guess(double alpha, double phi0, double delta) {
   const double ka = delta - A, kb = delta + A;
   const auto Q = [&](double k) { return std::copysign(std::pow(std::abs(k), -alpha), k); };
   if (alpha < 0) {
-    const double qa = Q(ka), qb = Q(kb), sum = qa + qb;
+    // Near the antisymmetric S (qa ≈ −qb) the ratio is ill-conditioned for −1 < α < 0 and would put
+    // the guess far out, past other roots (curves with loops; at α = −0.1 Newton then wandered for
+    // ~40 steps on average); the clamp keeps it within 2|A| + 1 (same roots, 6 steps at α = −0.1).
+    const double qa = Q(ka), qb = Q(kb), sum = qa + qb, bound = 2 * std::abs(A) + 1;
     if (!(std::abs(sum) > 1e-12 * (std::abs(qa) + std::abs(qb)))) return A;
-    return delta * (qb - qa) / sum;
+    return std::clamp(delta * (qb - qa) / sum, -bound, bound);
   }
   // α > 0: q keeps its sign, a ∈ (−|Δ|, |Δ|); the end curvature ratio of the clothoid, clamped.
   const double r = (ka * kb > 0) ? (Q(kb) - Q(ka)) / (Q(kb) + Q(ka)) : (A > 0 ? 0.9 : -0.9);

@@ -115,7 +115,9 @@ TEST(G1Hermite, EveryAlphaVerifiedByTanhSinh) {
       }
     }
     const int total = solved + refused + failed;
-    if (alpha < 0) EXPECT_EQ(solved, total) << alpha;
+    if (alpha < 0) {
+      EXPECT_EQ(solved, total) << alpha;
+    }
     // α ∈ (0, 1]: a chord within ~1e-2 rad of a tangent needs κ ratios beyond double (6 of 2000 at α = 1).
     EXPECT_LE(failed, total / 100 + 1) << alpha;
     std::printf("alpha %5.2f: %d solved, %d refused (proven), %d not converged of %d\n", alpha, solved, refused, failed,
