@@ -84,6 +84,49 @@ std::complex<Quad> quad_tangent_integral(const QuadSegment& s) {
   return {re, im};
 }
 
+// The end-to-end check of one solution: "" when it passes, else what is off.
+std::string check_end_to_end(const G1HermiteProblem& p, const G1HermiteResult& r) {
+  const LaSegment& seg = r.curve.segments()[0];
+  const QuadSegment qs{{seg.law().alpha, seg.law().sigma}, seg.ua(), seg.ub(), seg.qa(), seg.qb()};
+  const std::complex<Quad> I = quad_tangent_integral(qs);
+  const Quad c = cos(Quad(seg.rotation_angle()) + seg.phi_a()), s = sin(Quad(seg.rotation_angle()) + seg.phi_a());
+  const Quad ex = seg.start().real() + seg.scale() * (c * I.real() - s * I.imag());
+  const Quad ey = seg.start().imag() + seg.scale() * (s * I.real() + c * I.imag());
+  const double end_error = std::hypot(static_cast<double>(ex - Quad(p.p1.real())), static_cast<double>(ey - Quad(p.p1.imag())));
+  const double theta_end = static_cast<double>(Quad(seg.rotation_angle()) + seg.phi_a() + qs.turn(qs.ub));
+  const double angle0 = std::abs(wrap(seg.rotation_angle() + seg.phi_a() - p.theta0));
+  const double angle1 = std::abs(wrap(theta_end - p.theta1));
+  if (end_error <= 1e-10 && std::abs(seg.start() - p.p0) <= 1e-15 && angle0 <= 1e-10 && angle1 <= 1e-10) return "";
+  return "alpha " + std::to_string(p.alpha) + " theta0 " + std::to_string(p.theta0) + " theta1 " + std::to_string(p.theta1) +
+         ": end " + std::to_string(end_error) + " angles " + std::to_string(angle0) + " " + std::to_string(angle1);
+}
+
+// Beyond the test set: tangents anywhere in (−π, π), windings −1, 0, 1 (turnings up to ~3π), and α
+// near the ends of the range, where the kernels' pieces turn most and the law is steepest.
+TEST(G1HermiteIndependent, RandomDataWithWindingsEndToEnd) {
+  constexpr double kMore[] = {-5, -0.3, -0.1, 0.1, 0.3, 1.5, 5};
+  const auto angles = test::g1_problem_set(full_run() ? 2000 : 120, 20261124);
+  for (double alpha : kMore) {
+    std::atomic<int> checked = 0;
+    std::mutex m;
+    std::vector<std::string> failures;
+    tbb::parallel_for(size_t{0}, angles.size(), [&](size_t i) {
+      const G1HermiteProblem p{{0, 0}, 2 * angles[i].theta0, {1, 0}, 2 * angles[i].theta1, alpha};
+      G1HermiteOptions o;
+      o.winding = static_cast<int>(i % 3) - 1;
+      const G1HermiteResult r = solve_g1_hermite(p, o);
+      if (!r.usable()) return;
+      ++checked;
+      if (std::string f = check_end_to_end(p, r); !f.empty()) {
+        std::lock_guard lock(m);
+        failures.push_back(f + " winding " + std::to_string(o.winding));
+      }
+    });
+    EXPECT_TRUE(failures.empty()) << failures.size() << " failures, first: " << failures[0];
+    EXPECT_GE(checked.load(), static_cast<int>(angles.size() / 10)) << "alpha " << alpha;  // α = 5: 15 of 120
+  }
+}
+
 TEST(G1HermiteIndependent, SolutionsEndToEndInQuadruplePrecision) {
   const auto set = test::g1_problem_set();
   const size_t stride = full_run() ? 1 : 20;
@@ -96,23 +139,10 @@ TEST(G1HermiteIndependent, SolutionsEndToEndInQuadruplePrecision) {
       const G1HermiteProblem p{{0, 0}, a.theta0, {1, 0}, a.theta1, alpha};
       const G1HermiteResult r = solve_g1_hermite(p);
       if (!r.usable()) return;
-      const LaSegment& seg = r.curve.segments()[0];
-      const QuadSegment qs{{seg.law().alpha, seg.law().sigma}, seg.ua(), seg.ub(), seg.qa(), seg.qb()};
-      const std::complex<Quad> I = quad_tangent_integral(qs);
-      // Placement: start + ℓ R e^{iφa} ∫ e^{i(φ − φa)}, in quadruple precision.
-      const Quad c = cos(Quad(seg.rotation_angle()) + seg.phi_a()), s = sin(Quad(seg.rotation_angle()) + seg.phi_a());
-      const Quad ex = seg.start().real() + seg.scale() * (c * I.real() - s * I.imag());
-      const Quad ey = seg.start().imag() + seg.scale() * (s * I.real() + c * I.imag());
-      const double end_error = std::hypot(static_cast<double>(ex - 1), static_cast<double>(ey));
-      const double theta_end = static_cast<double>(Quad(seg.rotation_angle()) + seg.phi_a() + qs.turn(qs.ub));
-      const double start_error = std::abs(seg.start() - p.p0);
-      const double angle0 = std::abs(wrap(seg.rotation_angle() + seg.phi_a() - a.theta0));
-      const double angle1 = std::abs(wrap(theta_end - a.theta1));
       ++checked;
-      if (!(end_error <= 1e-10 && start_error <= 1e-15 && angle0 <= 1e-10 && angle1 <= 1e-10)) {
+      if (std::string f = check_end_to_end(p, r); !f.empty()) {
         std::lock_guard lock(m);
-        failures.push_back("theta0 " + std::to_string(a.theta0) + " theta1 " + std::to_string(a.theta1) + ": end " +
-                           std::to_string(end_error) + " angles " + std::to_string(angle0) + " " + std::to_string(angle1));
+        failures.push_back(f);
       }
     });
     EXPECT_TRUE(failures.empty()) << "alpha " << alpha << ": " << failures.size() << " failures, first: " << failures[0];
