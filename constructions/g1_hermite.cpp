@@ -212,9 +212,7 @@ struct Normalized {
     return clothoid_rule<20>(A, std::max(1, static_cast<int>(std::ceil(omega / 13))));
   }
 
-  // α = 0: κ = σ e^{q}, q = qa + bu; φ = φ0 + Δ E(u), E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for
-  // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
-  // node: the denominator expm1(−|b|) is per evaluation.
+  // α = 0: κ = σ e^{q}, q = qa + bu, φ = φ0 + Δ expm1(bu)/expm1(b).
   bool exponential(double b, Integral& r, Trial& t) {
     if (std::abs(b) >= 1e-3) exponential_far(b, r);
     else exponential_near(b, r);
@@ -273,6 +271,8 @@ struct Normalized {
     r.dI = mirror ? dI_dm : -dI_dm;
   }
 
+  // |b| < 1e-3 (near the arc): E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for b > 0 (E = 1 − E(1 − u; −b)),
+  // a series in b below 1e-6; 20 nodes per 6 rad of turning.
   void exponential_near(double b, Integral& r) {
     const bool series = std::abs(b) < 1e-6, mirror = b > 0;
     const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
@@ -286,24 +286,8 @@ struct Normalized {
       const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
       return mirror ? 1.0 + (-e) : e;
     };
-    const int sub = panels_for(delta);
-    // Where |b| is large the turning gathers within 1/|b| of the steep end: panels ending at
-    // w, 4w, 16w, … from that end (w = 1/|b|).
-    std::vector<double> cuts{0.0};
-    const double w = 1.0 / std::abs(b);
-    if (std::abs(b) > 4) {
-      std::vector<double> from_end{0.0};
-      for (double d = w; d < 1.0; d *= 4) from_end.push_back(d);
-      from_end.push_back(1.0);
-      cuts.clear();
-      for (double d : from_end) cuts.push_back(b > 0 ? 1.0 - d : d);
-      std::sort(cuts.begin(), cuts.end());
-    } else {
-      cuts.push_back(1.0);
-    }
-    for (size_t i = 0; i + 1 < cuts.size(); ++i)
-      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
-                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+    evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta),
+                                    [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
   }
 
   // α ≠ 0, −1: (m, c) = λ(s, c̄) with (s, c̄) = (Δ, a)/hypot(Δ, a) and λ from the turning:
