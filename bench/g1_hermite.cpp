@@ -57,7 +57,7 @@ void g1(benchmark::State& state) {
 }
 
 BENCHMARK(g1)
-    ->ArgsProduct({{-100, -300, -200, -50, 0, 50, 100, 200, 300}, {0}})
+    ->ArgsProduct({{-100, -300, -250, -200, -150, -50, -30, -10, 0, 10, 30, 50, 100, 150, 200, 250, 300}, {0}})
     ->Args({50, 1})
     ->Args({200, 1})
     ->Unit(benchmark::kMicrosecond)

@@ -81,7 +81,9 @@ std::string_view to_string(ChainContinuity c) { return c == ChainContinuity::g1 
 ChainContinuity parse_chain_continuity(std::string_view name) {
   if (name == "g1") return ChainContinuity::g1;
   if (name == "g2") return ChainContinuity::g2;
-  throw_input_error(kFunction, "continuity", "'" + std::string(name) + "' is not one of g1 | g2");
+  std::string m(1, '\'');  // built step by step: GCC 12 warns (-Wrestrict) on "'" + std::string
+  m.append(name).append("' is not one of g1 | g2");
+  throw_input_error(kFunction, "continuity", m);
 }
 
 std::vector<PointFrame> estimate_frames(std::span<const std::complex<double>> pts, bool closed) {

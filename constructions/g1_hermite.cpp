@@ -28,7 +28,6 @@ struct Dual {
 };
 Dual operator+(Dual a, Dual b) { return {a.v + b.v, a.d + b.d}; }
 Dual operator-(Dual a, Dual b) { return {a.v - b.v, a.d - b.d}; }
-Dual operator-(Dual a, double k) { return {a.v - k, a.d}; }
 Dual operator-(Dual a) { return {-a.v, -a.d}; }
 Dual operator*(Dual a, Dual b) { return {a.v * b.v, a.v * b.d + a.d * b.v}; }
 Dual operator/(Dual a, Dual b) { return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)}; }
@@ -132,6 +131,28 @@ long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
   return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
 }
 
+// The power series of the log-variable kernels, Σ (iz)^n/n! with |z| ≤ kSeriesReach: a piece turning
+// up to 3.2 rad needs no quadrature node; ≤ 34 terms to 1e-17, the largest term 3.2³/3! ≈ 5.5 (about
+// half a digit of cancellation). 1/n, and 1/(1 + np) per thread for the last p (inv[0] = p,
+// inv[n + 1] = 1/(1 + np)).
+constexpr double kSeriesReach = 3.2;
+constexpr int kSeriesTerms = 48;
+constexpr auto kReciprocals = [] {
+  std::array<double, kSeriesTerms + 2> r{};
+  for (int n = 1; n < kSeriesTerms + 2; ++n) r[n] = 1.0 / n;
+  return r;
+}();
+const std::array<double, kSeriesTerms + 2>& series_reciprocals(double p) {
+  thread_local std::array<double, kSeriesTerms + 2> inv{};
+  thread_local double last = kNaN;
+  if (p != last) {
+    last = p;
+    inv[0] = p;
+    for (int n = 0; n <= kSeriesTerms; ++n) inv[n + 1] = 1 / (1 + n * p);
+  }
+  return inv;
+}
+
 // The normalized problem: φ0, Δ and the law; evaluate(x) gives f, f' and ∫e^{iφ}.
 struct Trial {
   bool ok = false;
@@ -191,10 +212,68 @@ struct Normalized {
     return clothoid_rule<20>(A, std::max(1, static_cast<int>(std::ceil(omega / 13))));
   }
 
-  // α = 0: κ = σ e^{q}, q = qa + bu; φ = φ0 + Δ E(u), E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for
-  // b > 0 (E = 1 − E(1 − u; −b), so e^{bu} never overflows); a series in b near 0. One expm1 per
-  // node: the denominator expm1(−|b|) is per evaluation.
+  // α = 0: κ = σ e^{q}, q = qa + bu, φ = φ0 + Δ expm1(bu)/expm1(b).
   bool exponential(double b, Integral& r, Trial& t) {
+    if (std::abs(b) >= 1e-3) exponential_far(b, r);
+    else exponential_near(b, r);
+    // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
+    const double lr = b == 0 ? 0.0
+                      : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
+                              : std::log(-b) - std::log(-std::expm1(b));
+    t.qa = std::log(std::abs(delta)) + lr;
+    t.qb = t.qa + b;
+    return std::isfinite(t.qa) && std::isfinite(t.qb);
+  }
+
+  // |b| ≥ 1e-3. From the steep end (u = 0 for b < 0; for b > 0 the mirror u ↦ 1 − u, φ0 ↦ φ0 + Δ,
+  // Δ ↦ −Δ) with m = |b| and v = mu: φ = φe + D(1 − e^(−v)), D = Δ/(1 − e^(−m)), I = (1/m)∫₀^m e^{iφ}dv.
+  // Where |D|e^(−v) ≤ kSeriesReach (v ≥ V) the phase is a power series in e^(−v):
+  // e^{iφ} = e^{i(φe + D)} Σ (−iD)^n e^(−nv)/n!, integrated term by term; [0, min(V, m)] (only for
+  // turnings beyond kSeriesReach) by Gauss–Legendre. The derivative, with V held fixed:
+  // dI/dm = (e^{i(φe ± Δ)} − I)/m + (i D′/m)∫₀^m (1 − e^(−v))e^{iφ}dv, D′ = −D/expm1(m).
+  void exponential_far(double b, Integral& r) {
+    const bool mirror = b > 0;
+    const double m = std::abs(b), phe = mirror ? phi0 + delta : phi0, dl = mirror ? -delta : delta;
+    const double D = dl / -std::expm1(-m), W = std::min(m, std::max(0.0, std::log(std::abs(D) / kSeriesReach)));
+    Complex J0, J1;  // ∫₀^m e^{iφ} dv and ∫₀^m (1 − e^(−v)) e^{iφ} dv
+    if (W > 0)
+      evaluations += gauss_by_omega(0.5 * W * (std::abs(D) + 1), 0.0, W, [&](double v, double wt) {
+        const double g = -std::expm1(-v);
+        const Complex e = std::polar(wt, phe + D * g);
+        J0 += e;
+        J1 += g * e;
+      });
+    if (m > W) {
+      // Σ c_n T_n and Σ c_n T_(n+1), c_n = (−iD)^n/n!, T_k = ∫_W^m e^(−kv)dv = e^(−kW) S_k / k with
+      // S_k = 1 − e^(−kh), h = m − W, by S_(k+1) = S_1 + e^(−h) S_k (no cancellation for small h).
+      const double eW = std::exp(-W), S1 = -std::expm1(-(m - W)), eh = 1 - S1;
+      double pW = eW, Sk = S1;
+      double T_next = pW * Sk;
+      Complex c = 1, A = m - W, B = T_next;
+      const double z = std::abs(D) * eW;  // ≤ kSeriesReach
+      double bound = 1;
+      for (int n = 1; n < kSeriesTerms; ++n) {
+        c *= Complex(0, -D * kReciprocals[n]);
+        A += c * T_next;
+        pW *= eW;
+        Sk = S1 + eh * Sk;
+        T_next = pW * Sk * kReciprocals[n + 1];
+        B += c * T_next;
+        bound *= z * kReciprocals[n];
+        if (bound < 1e-17) break;
+      }
+      const Complex e = std::polar(1.0, phe + D);
+      J0 += e * A;
+      J1 += e * (A - B);
+    }
+    r.I = J0 / m;
+    const Complex dI_dm = (std::polar(1.0, phe + dl) - r.I) / m + Complex(0, -D / std::expm1(m)) * J1 / m;
+    r.dI = mirror ? dI_dm : -dI_dm;
+  }
+
+  // |b| < 1e-3 (near the arc): E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for b > 0 (E = 1 − E(1 − u; −b)),
+  // a series in b below 1e-6; 20 nodes per 6 rad of turning.
+  void exponential_near(double b, Integral& r) {
     const bool series = std::abs(b) < 1e-6, mirror = b > 0;
     const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
     const Dual den{em, (em + 1) * dbeta};
@@ -207,31 +286,8 @@ struct Normalized {
       const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
       return mirror ? 1.0 + (-e) : e;
     };
-    const int sub = panels_for(delta);
-    // Where |b| is large the turning gathers within 1/|b| of the steep end: panels ending at
-    // w, 4w, 16w, … from that end (w = 1/|b|).
-    std::vector<double> cuts{0.0};
-    const double w = 1.0 / std::abs(b);
-    if (std::abs(b) > 4) {
-      std::vector<double> from_end{0.0};
-      for (double d = w; d < 1.0; d *= 4) from_end.push_back(d);
-      from_end.push_back(1.0);
-      cuts.clear();
-      for (double d : from_end) cuts.push_back(b > 0 ? 1.0 - d : d);
-      std::sort(cuts.begin(), cuts.end());
-    } else {
-      cuts.push_back(1.0);
-    }
-    for (size_t i = 0; i + 1 < cuts.size(); ++i)
-      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], sub,
-                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
-    // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
-    const double lr = b == 0 ? 0.0
-                      : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
-                              : std::log(-b) - std::log(-std::expm1(b));
-    t.qa = std::log(std::abs(delta)) + lr;
-    t.qb = t.qa + b;
-    return std::isfinite(t.qa) && std::isfinite(t.qb);
+    evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta),
+                                    [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
   }
 
   // α ≠ 0, −1: (m, c) = λ(s, c̄) with (s, c̄) = (Δ, a)/hypot(Δ, a) and λ from the turning:
@@ -270,67 +326,114 @@ struct Normalized {
     t.qb = qb.v;
     if (!(std::isfinite(qa.v) && std::isfinite(qb.v))) return false;
     if (alpha > 0 && !(qa.v * qb.v > 0)) return false;
-    const Dual Fa = law.F(qa);
     // q(zero) = 0, from the end nearer to it.
     const Dual ustar = c.v != 0 ? (-qa) / (2.0 * c) : Dual{kNaN, 0};
     const double zero = ustar.v;
-    // A graded piece from the zero u* of q (α < 0) to the end e: u = u* + (e − u*)t⁴, t ∈ [t0, 1],
-    // φ = φ0 + (F(q_e) t^(4p) − F(qa)) / (2c) (F(0) = 0 for α < 0), all in x's derivative.
-    auto graded = [&](double e, Dual Fe, Dual t0, double sign) {
-      const Dual span = Dual{e, 0} - ustar;
-      const int panels = panels_for(Fe.v / (2 * c.v) * (1 - std::pow(t0.v, 4 * law.p)));
-      const std::vector<double>* powers = t0.v == 0 ? &gauss_legendre_20_node_powers(4 * law.p, panels) : nullptr;
-      Integral piece;
-      const Dual len = 1.0 + (-t0), inv = Dual{1, 0} / (2.0 * c), a0 = phi0 + (-Fa) * inv, a1 = Fe * inv, jac = 4.0 * span;
-      size_t k = 0;
-      evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double tau, double wt) {
-        const Dual t = t0 + tau * len;
-        const Dual tp = powers ? Dual{(*powers)[k++], 0} : dual_pow(t, 4 * law.p);
-        add(piece, wt * ((t * t * t) * jac), a0 + tp * a1);
-      });
-      // × (1 − t0), the Jacobian of τ ↦ t.
-      r.I += sign * (len.v * piece.I);
-      r.dI += sign * (len.v * piece.dI + len.d * piece.I);
-    };
-    // α > 0 with the zero u* of q outside [0, 1] by d < 2: κ is steep at the end next to it. With
-    // r = |u − u*| (r_B = 1 + d at the far end B) and w = log(r/r_B) ∈ [log(d/r_B), 0]:
-    // |q| = |q_B|e^w, φ = φ_B + |q_B|^p expm1(pw)/(p·2c) (w/(2c) at α = 1), du = r_B e^w dw, an entire
-    // integrand (no pow per node). Panels of width ≤ 1/|p| in w keep φ' = |q_B|^p e^(pw)/(2c) within
-    // a factor e on each; r < 1e-18 (u-width below 1e-18) is left out, so ≤ ⌈42|p|⌉ panels.
-    auto steep = [&](bool near_start) {
+    // ∫ e^{iφ} du over the piece from r = |u − u*| = d (0 at the inflection, α < 0; the distance of
+    // the zero outside [0, 1] otherwise) to the end B at r_B, where q = q_B and φ = φ_B (φ0 or φ0 + Δ,
+    // fixed by the data). With w = log(r/r_B) ∈ [w0, 0], w0 = log(d/r_B) (−log1p(1/d) when r_B = 1 + d,
+    // exact for far zeros): |q| = |q_B|e^w, φ = φ_B + a·expm1(pw), a = F(q_B)/(2c) (φ_B + w/(2c) at
+    // α = 1), du = r_B e^w dw: an entire integrand, no pow per node, and no singularity at the
+    // inflection (φ − φ* ∝ r^p there).
+    // Where |a|e^(pw) ≤ kSeriesReach (near the zero for p > 0, i.e. α < 0 or α > 1; near B for p < 0)
+    // e^{iφ} = e^{i(φ_B − a)} Σ (ia e^(pw))^n/n! is integrated term by term in closed form
+    // (∫e^((1+np)w)dw). The rest, where the piece turns more than kSeriesReach, by Gauss–Legendre on
+    // panels of width ≤ 1/|p| in w (φ' within a factor e on each), 12, 16 or 20 nodes for
+    // ω = (width/2)·hypot(1, max|φ'|) up to 4, 8, 12. The split is held fixed in x, so the derivative
+    // of the sum is exact; r < 1e-18 (u-width below 1e-18) is left out.
+    auto log_piece = [&](Dual d, Dual rB, Dual qB, double phiB) {
+      if (!(rB.v > 1e-18)) return;  // a piece narrower than 1e-18 in u
       const Dual two_c = 2.0 * c;
-      const Dual d = near_start ? qa / two_c : -qb / two_c, rB = 1.0 + d;
-      const Dual qB = near_start ? qb : qa;
-      const double phiB = near_start ? phi0 + delta : phi0, p = law.p;
+      const double p = law.p;
       const Dual amp = (law.log_F ? Dual{1, 0} : dual_pow(qB.v < 0 ? -qB : qB, p)) / two_c;
-      const Dual w0 = dual_log((d.v > 1e-18 ? d : Dual{1e-18, 0}) / rB);
-      const int panels = std::max(1, static_cast<int>(std::ceil(-w0.v * std::abs(p))));
-      for (int i = 0; i < panels; ++i) {
-        // τ ∈ [0, 1] ↦ w = w0(1 − τ); this panel's τ ∈ [i, i + 1]/panels.
-        const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
-        const double slope = std::abs(amp.v) * std::max(std::exp(p * w0.v * (1 - ta)), std::exp(p * w0.v * (1 - tb)));
-        const double omega = 0.5 * (tb - ta) * -w0.v * std::hypot(1.0, slope);
-        evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
-          const Dual w{w0.v * (1 - tau), w0.d * (1 - tau)};
-          const double ew = std::exp(w.v), em = law.log_F ? 0.0 : std::expm1(p * w.v);
-          const Dual E = law.log_F ? w : Dual{em / p, (em + 1) * w.d};
-          add(r, (wt * ew) * ((-w0) * rB + Dual{0, -w0.v * rB.v * w.d}), phiB + amp * E);
-        });
+      const Dual w0 = d.v <= 1e-18 ? dual_log(Dual{1e-18, 0} / rB)
+                      : rB.v == 1 + d.v ? Dual{-std::log1p(1 / d.v), d.d / (d.v * rB.v)}
+                                         : dual_log(d / rB);
+      if (law.log_F) {  // α = 1, the logarithmic spiral: r_B e^{iφ_B} (1 − e^{k w0})/k, k = 1 + i/(2c)
+        const Complex k(1, amp.v), dk(0, amp.d), E = std::exp(k * w0.v), G = (1.0 - E) / k;
+        const Complex dG = -E * (dk * w0.v + k * w0.d) / k - G * dk / k, eB = std::polar(1.0, phiB);
+        r.I += rB.v * eB * G;
+        r.dI += eB * (rB.d * G + rB.v * dG);
+        return;
+      }
+      const auto phase = [&](Dual w) -> Dual {  // φ − φ_B
+        const double em = std::expm1(p * w.v);
+        return amp * Dual{em / p, (em + 1) * w.d};
+      };
+      // The split ws: the series covers [w0, ws] (p > 0) or [ws, 0] (p < 0).
+      const double ws = std::clamp(std::log(kSeriesReach / std::abs(amp.v / p)) / p, w0.v, 0.0);  // |a|e^(p·ws) = reach
+      const Dual split = ws <= w0.v ? w0 : Dual{ws, 0};  // at w0 it moves with w0
+      const Dual q_lo = p > 0 ? split : w0, q_hi = p > 0 ? Dual{0, 0} : split;
+      const Dual span = q_hi - q_lo;
+      if (span.v > 0) {
+        const int panels = std::max(1, static_cast<int>(std::ceil(span.v * std::abs(p))));
+        for (int i = 0; i < panels; ++i) {
+          const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
+          const double wa = q_lo.v + ta * span.v, wb = q_lo.v + tb * span.v;
+          const double slope = std::abs(amp.v) * std::max(std::exp(p * wa), std::exp(p * wb));
+          const double omega = 0.5 * (tb - ta) * span.v * std::hypot(1.0, slope);
+          evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+            const Dual w = q_lo + tau * span;
+            const double ew = std::exp(w.v);
+            add(r, wt * (Dual{ew, ew * w.d} * rB * span), phiB + phase(w));
+          });
+        }
+      }
+      const Dual s_lo = p > 0 ? w0 : split, s_hi = p > 0 ? split : Dual{0, 0};
+      const double h = s_hi.v - s_lo.v;
+      if (h > 0) {
+        // A = Σ c_n T_n, B = Σ c_n T_(n+1), c_n = (ia)^n/n!, T_k = ∫ e^((1+kp)w) dw over [s_lo, s_hi],
+        // from x_n(w) = e^w (a e^(pw))^n/n! at both ends (c_n e^((1+np)w) = i^n x_n; no overflow of
+        // e^(npw) alone), in real arithmetic: i^n sorts the terms into Re and Im with signs.
+        const double a = amp.v / p, epl = std::exp(p * s_lo.v), eph = std::exp(p * s_hi.v);
+        double xl = std::exp(s_lo.v), xh = std::exp(s_hi.v), bound = 1;
+        const double z = std::abs(a) * std::max(epl, eph);  // ≤ kSeriesReach
+        const std::array<double, kSeriesTerms + 2>& inv_k = series_reciprocals(p);
+        const auto integral = [h, &inv_k](double lo, double hi, int n) {  // (hi − lo)/k_n, lo = hi e^(−k_n h)
+          const double kh = h * (1 + n * inv_k[0]);  // inv_k[0] holds p itself
+          return std::abs(kh) > 0.5 ? (hi - lo) * inv_k[n + 1] : hi * (h * (kh == 0 ? 1.0 : -std::expm1(-kh) / kh));
+        };
+        double Are = 0, Aim = 0, Bre = 0, Bim = 0;
+        const double al = a * epl, ah = a * eph;
+        for (int n = 0; n < kSeriesTerms; ++n) {
+          const double tA = integral(xl, xh, n), tB = integral(xl * epl, xh * eph, n + 1);
+          const double sign = (n & 2) ? -1.0 : 1.0;
+          if (n & 1) Aim += sign * tA, Bim += sign * tB;
+          else Are += sign * tA, Bre += sign * tB;
+          const double inv = kReciprocals[n + 1];
+          bound *= z * inv;
+          if (bound < 1e-17) break;
+          xl *= al * inv;
+          xh *= ah * inv;
+        }
+        const Complex A(Are, Aim), B(Bre, Bim);
+        const Complex E0 = std::polar(1.0, phiB - amp.v / p);
+        const Complex I = rB.v * E0 * A;
+        r.I += I;
+        // The moving ends' terms, where the integrand is not negligible (the inflection's e^w0 ~ 1e-18).
+        const auto f_at = [&](Dual w) {
+          return w.d == 0 || std::exp(w.v) * rB.v < 1e-17 ? Complex{} : w.d * rB.v * std::exp(w.v) * std::polar(1.0, phiB + phase(w).v);
+        };
+        r.dI += rB.d * E0 * A + rB.v * E0 * Complex(0, amp.d / p) * (B - A) - f_at(s_lo) + f_at(s_hi);
       }
     };
-    if (alpha < 0 && zero > -0.5 && zero < 1.5) {
-      if (zero > 0 && zero < 1) {
-        graded(0.0, Fa, Dual{0, 0}, -1.0);
-        graded(1.0, law.F(qb), Dual{0, 0}, 1.0);
-      } else if (zero <= 0) {
-        graded(1.0, law.F(qb), dual_pow((-ustar) / (1.0 + (-ustar)), 0.25), 1.0);
+    // The zero of q outside [0, 1] by d: one piece, from the end next to it to the far end.
+    auto steep = [&](bool near_start) {
+      const Dual d = near_start ? qa / (2.0 * c) : -qb / (2.0 * c);
+      log_piece(d, 1.0 + d, near_start ? qb : qa, near_start ? phi0 + delta : phi0);
+    };
+    if (alpha < 0 && std::isfinite(zero)) {
+      if (zero > 0 && zero < 1) {  // the inflection: a piece from it to each end
+        log_piece(Dual{0, 0}, ustar, qa, phi0);
+        log_piece(Dual{0, 0}, 1.0 + (-ustar), qb, phi0 + delta);
       } else {
-        graded(0.0, Fa, dual_pow((ustar - 1.0) / ustar, 0.25), -1.0);
+        steep(zero <= 0);
       }
-    } else if (alpha > 0 && zero > -2 && zero < 3) {
+    } else if (alpha > 0 && std::isfinite(zero)) {
       steep(zero <= 0);
     } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
       const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
+      const Dual Fa = law.F(qa);
       evaluations += gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
         const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
         add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
@@ -365,9 +468,12 @@ double power_guess(double alpha, double phi0, double delta) {
   const double ka = delta - A, kb = delta + A;
   const auto Q = [&](double k) { return std::copysign(std::pow(std::abs(k), -alpha), k); };
   if (alpha < 0) {
-    const double qa = Q(ka), qb = Q(kb), sum = qa + qb;
+    // Near the antisymmetric S (qa ≈ −qb) the ratio is ill-conditioned for −1 < α < 0 and would put
+    // the guess far out, past other roots (curves with loops; at α = −0.1 Newton then wandered for
+    // ~40 steps on average); the clamp keeps it within 2|A| + 1 (same roots, 6 steps at α = −0.1).
+    const double qa = Q(ka), qb = Q(kb), sum = qa + qb, bound = 2 * std::abs(A) + 1;
     if (!(std::abs(sum) > 1e-12 * (std::abs(qa) + std::abs(qb)))) return A;
-    return delta * (qb - qa) / sum;
+    return std::clamp(delta * (qb - qa) / sum, -bound, bound);
   }
   // α > 0: q keeps its sign, a ∈ (−|Δ|, |Δ|); the end curvature ratio of the clothoid, clamped.
   const double r = (ka * kb > 0) ? (Q(kb) - Q(ka)) / (Q(kb) + Q(ka)) : (A > 0 ? 0.9 : -0.9);
@@ -671,11 +777,16 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
 
   // The reduced equation f(x) = 0: domain and guess.
   double xmin = -HUGE_VAL, xmax = HUGE_VAL, x0 = 0, step = 0.5;
+  // α ≥ 0: f at the two limits of x (all turning at one end); NaN where not known.
+  double f_at_xmin = kNaN, f_at_xmax = kNaN;
   if (pr.alpha == 0) {
     xmin = -700;
     xmax = 700;
     x0 = exponential_guess(nz.phi0, nz.delta);
     step = 1;
+    // b → ∞ gathers the turning at the end (the chord tends to the start tangent), b → −∞ at the start.
+    f_at_xmax = std::sin(nz.phi0);
+    f_at_xmin = std::sin(nz.phi0 + nz.delta);
   } else if (pr.alpha > 0) {
     xmin = -700;
     xmax = 700;
@@ -683,6 +794,10 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     // of an end) lands in the flat tail of f, where Newton creeps (α = 0.5: up to 15 steps).
     x0 = -pr.alpha * std::clamp(exponential_guess(nz.phi0, nz.delta), -12.0, 12.0);
     step = 1;
+    if (pr.alpha <= 1) {  // x → −∞: κ = ∞ at the end, x → ∞: at the start
+      f_at_xmin = std::sin(nz.phi0);
+      f_at_xmax = std::sin(nz.phi0 + nz.delta);
+    }
     if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
       // The shapes run from κ = ∞ at the start (x → ∞, φ = φ0 + Δu^p) to κ = ∞ at the end; their
       // end-point direction is monotonic in x (docs/g1_hermite.md), so f must change sign
@@ -691,6 +806,8 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
       const double f_start = (std::polar(1.0, nz.phi0) * J).imag();
       const double f_end = (std::polar(1.0, nz.phi0 + nz.delta) * std::conj(J)).imag();
+      f_at_xmax = f_start;
+      f_at_xmin = f_end;
       if ((f_start > 1e-12 && f_end > 1e-12) || (f_start < -1e-12 && f_end < -1e-12))
         return refuse("alpha > 1: the chord direction is outside the range of end-point directions of the curves of "
                       "this slope and turning (its limits, the curves with infinite curvature at one end, lie on one "
@@ -711,6 +828,12 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     // wrong (flat tails) is replaced by a doubling step toward the root.
     // α = 0: x = b = log(κb/κa) runs the other way.
     const double rising = pr.alpha == 0 ? (nz.delta > 0 ? -1.0 : 1.0) : pr.alpha > 0 ? (nz.delta > 0 ? 1.0 : -1.0) : 0.0;
+    // f runs from f_lo to f_hi (its limits) like a sigmoid: in each tail it approaches its limit
+    // geometrically in x, where plain Newton creeps. Newton on the logit
+    // g = log((f − f_lo)/(f_hi − f)), linear in both tails, has the same root (g = log(−f_lo/f_hi)).
+    const double f_lo = rising > 0 ? f_at_xmin : f_at_xmax, f_hi = rising > 0 ? f_at_xmax : f_at_xmin;
+    const bool logit = rising != 0 && f_lo < 0 && f_hi > 0;
+    const double g_root = logit ? std::log(-f_lo / f_hi) : 0;
     double x = x0, xp = kNaN, fp = kNaN, blo = kNaN, bhi = kNaN, flo = kNaN, jump = 1;
     for (int it = 0; it < o.max_iterations; ++it) {
       ++sum.iterations;
@@ -735,6 +858,10 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       xp = x;
       fp = t.f;
       double next = x - t.f / t.df;
+      if (logit && t.f > f_lo && t.f < f_hi && t.df * rising > 0) {
+        const double a = t.f - f_lo, b = f_hi - t.f;
+        next = x - (std::log(a / b) - g_root) / (t.df * (1 / a + 1 / b));
+      }
       if (!std::isfinite(next)) next = x + (t.f > 0 ? -step : step);
       if (rising != 0 && !std::isfinite(blo) && (t.df * rising <= 0 || std::abs(next - x) > 2 * kPi)) {
         next = x - (t.f > 0 ? 1.0 : -1.0) * rising * jump;

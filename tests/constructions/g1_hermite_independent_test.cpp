@@ -15,6 +15,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <mutex>
 #include <numbers>
 #include <string>
@@ -59,7 +60,9 @@ struct QuadSegment {
   QuadLaw law;
   Quad ua, ub, qa, qb;
   Quad slope() const { return (qb - qa) / (ub - ua); }
-  Quad q(const Quad& u) const { return qa + slope() * (u - ua); }
+  // From the nearer end: q at one end may be ~1e-70 of the other (α = 1 near a tangent), below
+  // what qa + slope·(ub − ua) resolves even in quadruple precision.
+  Quad q(const Quad& u) const { return u - ua <= ub - u ? Quad(qa + slope() * (u - ua)) : Quad(qb - slope() * (ub - u)); }
   Quad turn(const Quad& u) const {
     const Quad d = q(u) - qa;
     if (abs(d) < Quad(1e-25) * (1 + abs(qa))) return law.K((qa + q(u)) / 2) * (u - ua);
@@ -81,6 +84,49 @@ std::complex<Quad> quad_tangent_integral(const QuadSegment& s) {
   return {re, im};
 }
 
+// The end-to-end check of one solution: "" when it passes, else what is off.
+std::string check_end_to_end(const G1HermiteProblem& p, const G1HermiteResult& r) {
+  const LaSegment& seg = r.curve.segments()[0];
+  const QuadSegment qs{{seg.law().alpha, seg.law().sigma}, seg.ua(), seg.ub(), seg.qa(), seg.qb()};
+  const std::complex<Quad> I = quad_tangent_integral(qs);
+  const Quad c = cos(Quad(seg.rotation_angle()) + seg.phi_a()), s = sin(Quad(seg.rotation_angle()) + seg.phi_a());
+  const Quad ex = seg.start().real() + seg.scale() * (c * I.real() - s * I.imag());
+  const Quad ey = seg.start().imag() + seg.scale() * (s * I.real() + c * I.imag());
+  const double end_error = std::hypot(static_cast<double>(ex - Quad(p.p1.real())), static_cast<double>(ey - Quad(p.p1.imag())));
+  const double theta_end = static_cast<double>(Quad(seg.rotation_angle()) + seg.phi_a() + qs.turn(qs.ub));
+  const double angle0 = std::abs(wrap(seg.rotation_angle() + seg.phi_a() - p.theta0));
+  const double angle1 = std::abs(wrap(theta_end - p.theta1));
+  if (end_error <= 1e-10 && std::abs(seg.start() - p.p0) <= 1e-15 && angle0 <= 1e-10 && angle1 <= 1e-10) return "";
+  return "alpha " + std::to_string(p.alpha) + " theta0 " + std::to_string(p.theta0) + " theta1 " + std::to_string(p.theta1) +
+         ": end " + std::to_string(end_error) + " angles " + std::to_string(angle0) + " " + std::to_string(angle1);
+}
+
+// Beyond the test set: tangents anywhere in (−π, π), windings −1, 0, 1 (turnings up to ~3π), and α
+// near the ends of the range, where the kernels' pieces turn most and the law is steepest.
+TEST(G1HermiteIndependent, RandomDataWithWindingsEndToEnd) {
+  constexpr double kMore[] = {-5, -0.3, -0.1, 0.1, 0.3, 1.5, 5};
+  const auto angles = test::g1_problem_set(full_run() ? 2000 : 120, 20261124);
+  for (double alpha : kMore) {
+    std::atomic<int> checked = 0;
+    std::mutex m;
+    std::vector<std::string> failures;
+    tbb::parallel_for(size_t{0}, angles.size(), [&](size_t i) {
+      const G1HermiteProblem p{{0, 0}, 2 * angles[i].theta0, {1, 0}, 2 * angles[i].theta1, alpha};
+      G1HermiteOptions o;
+      o.winding = static_cast<int>(i % 3) - 1;
+      const G1HermiteResult r = solve_g1_hermite(p, o);
+      if (!r.usable()) return;
+      ++checked;
+      if (std::string f = check_end_to_end(p, r); !f.empty()) {
+        std::lock_guard lock(m);
+        failures.push_back(f + " winding " + std::to_string(o.winding));
+      }
+    });
+    EXPECT_TRUE(failures.empty()) << failures.size() << " failures, first: " << failures[0];
+    EXPECT_GE(checked.load(), static_cast<int>(angles.size() / 10)) << "alpha " << alpha;  // α = 5: 15 of 120
+  }
+}
+
 TEST(G1HermiteIndependent, SolutionsEndToEndInQuadruplePrecision) {
   const auto set = test::g1_problem_set();
   const size_t stride = full_run() ? 1 : 20;
@@ -93,60 +139,60 @@ TEST(G1HermiteIndependent, SolutionsEndToEndInQuadruplePrecision) {
       const G1HermiteProblem p{{0, 0}, a.theta0, {1, 0}, a.theta1, alpha};
       const G1HermiteResult r = solve_g1_hermite(p);
       if (!r.usable()) return;
-      const LaSegment& seg = r.curve.segments()[0];
-      const QuadSegment qs{{seg.law().alpha, seg.law().sigma}, seg.ua(), seg.ub(), seg.qa(), seg.qb()};
-      const std::complex<Quad> I = quad_tangent_integral(qs);
-      // Placement: start + ℓ R e^{iφa} ∫ e^{i(φ − φa)}, in quadruple precision.
-      const Quad c = cos(Quad(seg.rotation_angle()) + seg.phi_a()), s = sin(Quad(seg.rotation_angle()) + seg.phi_a());
-      const Quad ex = seg.start().real() + seg.scale() * (c * I.real() - s * I.imag());
-      const Quad ey = seg.start().imag() + seg.scale() * (s * I.real() + c * I.imag());
-      const double end_error = std::hypot(static_cast<double>(ex - 1), static_cast<double>(ey));
-      const double theta_end = static_cast<double>(Quad(seg.rotation_angle()) + seg.phi_a() + qs.turn(qs.ub));
-      const double start_error = std::abs(seg.start() - p.p0);
-      const double angle0 = std::abs(wrap(seg.rotation_angle() + seg.phi_a() - a.theta0));
-      const double angle1 = std::abs(wrap(theta_end - a.theta1));
       ++checked;
-      if (!(end_error <= 1e-10 && start_error <= 1e-15 && angle0 <= 1e-10 && angle1 <= 1e-10)) {
+      if (std::string f = check_end_to_end(p, r); !f.empty()) {
         std::lock_guard lock(m);
-        failures.push_back("theta0 " + std::to_string(a.theta0) + " theta1 " + std::to_string(a.theta1) + ": end " +
-                           std::to_string(end_error) + " angles " + std::to_string(angle0) + " " + std::to_string(angle1));
+        failures.push_back(f);
       }
     });
     EXPECT_TRUE(failures.empty()) << "alpha " << alpha << ": " << failures.size() << " failures, first: " << failures[0];
     EXPECT_GT(checked.load(), 0) << "alpha " << alpha;
-    if (alpha < 0) EXPECT_EQ(checked.load(), static_cast<int>(set.size() / stride)) << "alpha " << alpha << ": every problem has a curve";
+    if (alpha < 0) {
+      EXPECT_EQ(checked.load(), static_cast<int>(set.size() / stride)) << "alpha " << alpha << ": every problem has a curve";
+    }
   }
 }
 
 // The chord condition of a shape with turning Δ from φ0 (chord along x), by tanh-sinh in double:
-//   α > 0:  q̂(u) = t + (1 − 2t)u > 0 (t ∈ (0, 1)), G(u) = ∫₀^u K(q̂), φ = φ0 + Δ G(u)/G(1)
-//           (K homogeneous: scaling q̂ only rescales the turning, fixed to Δ);
+//   α > 0:  q̂(u) linear from ta = 1/(1 + e^(−z)) to tb = 1/(1 + e^z) (z ∈ ℝ; ta + tb = 1, each
+//           without cancellation, so end-q ratios up to e^700 are reached), G(u) = ∫₀^u K(q̂),
+//           φ = φ0 + Δ G(u)/G(1) (K homogeneous: scaling q̂ only rescales the turning, fixed to Δ);
 //   α = 0:  κ ∝ e^{bu} (b ∈ ℝ), G(u) = (e^{bu} − 1)/b, the same φ.
+// ∫₀¹ e^{iφ} is integrated in the distance v from the steep end (the smaller q̂), which tanh-sinh
+// resolves down to the double range; the value is the same in either direction.
 // The sign of κ is the sign of Δ (a curve without inflection turns the way its curvature points).
 struct ShapeScan {
   double alpha, phi0, delta;
-  double G(double shape, double u) const {
-    if (alpha == 0) return std::abs(shape) < 1e-12 ? u : std::expm1(shape * u) / shape;
-    const double t = shape, slope = 1 - 2 * t;
-    const auto F = [&](double q) { return alpha == 1 ? std::log(q) : alpha / (alpha - 1) * std::pow(q, (alpha - 1) / alpha); };
-    if (std::abs(slope) < 1e-9) return u * std::pow(0.5, -1 / alpha);
-    return (F(t + slope * u) - F(t)) / slope;
-  }
   std::complex<double> integral(double shape) const {
     boost::math::quadrature::tanh_sinh<double> ts;
     constexpr double tol = 1e-9;  // the sign of Im ∫ is all the scan needs
-    const double g1 = G(shape, 1);
-    const auto phi = [&](double u) { return phi0 + delta * G(shape, u) / g1; };
-    return {ts.integrate([&](double u) { return std::cos(phi(u)); }, 0.0, 1.0, tol),
-            ts.integrate([&](double u) { return std::sin(phi(u)); }, 0.0, 1.0, tol)};
+    std::function<double(double)> phi;
+    if (alpha == 0) {
+      const auto G = [&](double u) { return std::abs(shape) < 1e-12 ? u : std::expm1(shape * u) / shape; };
+      phi = [=, p0 = phi0, d = delta](double u) { return p0 + d * G(u) / G(1); };
+    } else {
+      const double ta = 1 / (1 + std::exp(-shape)), tb = 1 / (1 + std::exp(shape)), slope = tb - ta;
+      const bool end_steep = tb < ta;
+      const double a = alpha;
+      const auto F = [a](double q) { return a == 1 ? std::log(q) : a / (a - 1) * std::pow(q, (a - 1) / a); };
+      const auto G = [=](double v) {  // G at u = v, or u = 1 − v when the end is steep
+        if (std::abs(slope) < 1e-9) return (end_steep ? 1 - v : v) * std::pow(0.5, -1 / a);
+        return (F(end_steep ? tb - slope * v : ta + slope * v) - F(ta)) / slope;
+      };
+      const double g1 = end_steep ? G(0) : G(1);
+      phi = [=, p0 = phi0, d = delta](double v) { return p0 + d * G(v) / g1; };
+    }
+    return {ts.integrate([&](double v) { return std::cos(phi(v)); }, 0.0, 1.0, tol),
+            ts.integrate([&](double v) { return std::sin(phi(v)); }, 0.0, 1.0, tol)};
   }
-  /// The grid: α > 0, t = logistic of 4001 points in [−30, 30] (t from 1e-13 to 1 − 1e-13);
-  /// α = 0, b = sinh of 4001 points in [−7, 7] (|b| up to 550, κ ratios up to e^550 at the ends).
+  /// The grid: α > 0, z = 700 sinh(7.25x)/sinh(7.25) at 4001 points x ∈ [−1, 1] (steps of 0.004
+  /// near the arc, end-q ratios up to e^700); α = 0, b = sinh of 4001 points in [−7, 7] (|b| up to
+  /// 550, κ ratios up to e^550 at the ends).
   std::vector<double> grid() const {
     std::vector<double> v;
     for (int k = 0; k <= 4000; ++k) {
       const double x = -1 + 2.0 * k / 4000;
-      v.push_back(alpha == 0 ? std::sinh(7 * x) : 1 / (1 + std::exp(-30 * x)));
+      v.push_back(alpha == 0 ? std::sinh(7 * x) : 700 * std::sinh(7.25 * x) / std::sinh(7.25));
     }
     return v;
   }

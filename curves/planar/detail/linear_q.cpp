@@ -85,6 +85,41 @@ std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& e
   return (p.e - p.u0) * sum;
 }
 
+// Ends of the parts of a plain piece with a steep end: for α > 0, q's zero at distance d < len/4
+// beyond an end (κ ∝ r^(−1/α), r the distance to the zero), cut where r = d·ratio^k with
+// ratio = e^(1/max(1, |p|)), p = 1 − 1/α (φ' changes by at most about e across a part); for α = 0,
+// κ ∝ e^(c0 u) with 1/|c0| < len/4, cut at 1/|c0|·2^k from the steeper end. Equal panels in u over
+// the whole piece put almost no node where such a segment turns (the 10-point estimate then says
+// so: tolerance_not_met, errors up to 1e-3 on G1 solutions with a chord near a tangent).
+std::vector<double> steep_cuts(const LaLaw& law, const LinearQ& seg) {
+  const double len = seg.length(), c0 = seg.slope();
+  std::vector<double> cuts{seg.ua, seg.ub};
+  if (!(c0 != 0 && std::isfinite(c0)) || !(law.alpha >= 0)) return cuts;
+  bool at_a = false;
+  double first = 0, ratio = 2, offset = 0;  // distances from the steep end: (first·ratio^k − offset)
+  if (law.alpha > 0) {
+    at_a = seg.qa / c0 >= 0;  // the zero lies before ua
+    const double d = at_a ? seg.qa / c0 : -seg.qb / c0;
+    if (!(d >= 0 && d < 0.25 * len)) return cuts;
+    ratio = std::exp(1 / std::max(1.0, std::abs(1 - 1 / law.alpha)));
+    first = std::max(d, 1e-300) * ratio;
+    offset = d;
+  } else {
+    at_a = c0 < 0;  // κ_u largest at ua
+    first = 1 / std::abs(c0);
+    if (!(first < 0.25 * len)) return cuts;
+  }
+  std::vector<double> from_end;
+  for (double r = first; r - offset < len && from_end.size() < 4096; r *= ratio) from_end.push_back(r - offset);
+  cuts = {seg.ua};
+  for (size_t k = 0; k < from_end.size(); ++k) {
+    const double u = at_a ? seg.ua + from_end[k] : seg.ub - from_end[from_end.size() - 1 - k];
+    if (u > cuts.back() && u < seg.ub) cuts.push_back(u);  // parts below rounding merge
+  }
+  cuts.push_back(seg.ub);
+  return cuts;
+}
+
 }  // namespace
 
 TangentPlan tangent_plan(const LaLaw& law, const LinearQ& seg) {
@@ -133,7 +168,14 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, lon
     } else {
       const double Fa = law.F(seg.qa);
       const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)); };
-      value[i] = plain(phi, seg.ua, seg.ub, panels, evaluations, c);
+      // The cap on the whole piece's turning (parts turn less): beyond it NaN, as for one part.
+      const std::vector<double> cuts = std::abs(phi(seg.ub) - seg.phi_a) <= kMaxResolvedTurning
+                                           ? steep_cuts(law, seg) : std::vector<double>{seg.ua, seg.ub};
+      for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+        std::complex<double> part_coarse;
+        value[i] += plain(phi, cuts[k], cuts[k + 1], panels, evaluations, c ? &part_coarse : nullptr);
+        if (c) *c += part_coarse;
+      }
     }
     if (p.sign < 0) value[i] = -value[i], rough[i] = -rough[i];
   }
