@@ -133,8 +133,7 @@ long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
 
 // The power series of the log-variable kernels, Σ (iz)^n/n! with |z| ≤ kSeriesReach: a piece turning
 // up to 3.2 rad needs no quadrature node; ≤ 34 terms to 1e-17, the largest term 3.2³/3! ≈ 5.5 (about
-// half a digit of cancellation). 1/n, and 1/(1 + np) per thread for the last p (inv[0] = p,
-// inv[n + 1] = 1/(1 + np)).
+// half a digit of cancellation). 1/n, and 1/(1 + np) per thread for the last p.
 constexpr double kSeriesReach = 3.2;
 constexpr int kSeriesTerms = 48;
 constexpr auto kReciprocals = [] {
@@ -142,13 +141,12 @@ constexpr auto kReciprocals = [] {
   for (int n = 1; n < kSeriesTerms + 2; ++n) r[n] = 1.0 / n;
   return r;
 }();
-const std::array<double, kSeriesTerms + 2>& series_reciprocals(double p) {
-  thread_local std::array<double, kSeriesTerms + 2> inv{};
+const std::array<double, kSeriesTerms + 1>& series_reciprocals(double p) {
+  thread_local std::array<double, kSeriesTerms + 1> inv{};
   thread_local double last = kNaN;
   if (p != last) {
     last = p;
-    inv[0] = p;
-    for (int n = 0; n <= kSeriesTerms; ++n) inv[n + 1] = 1 / (1 + n * p);
+    for (int n = 0; n <= kSeriesTerms; ++n) inv[n] = 1 / (1 + n * p);
   }
   return inv;
 }
@@ -388,10 +386,10 @@ struct Normalized {
         const double a = amp.v / p, epl = std::exp(p * s_lo.v), eph = std::exp(p * s_hi.v);
         double xl = std::exp(s_lo.v), xh = std::exp(s_hi.v), bound = 1;
         const double z = std::abs(a) * std::max(epl, eph);  // ≤ kSeriesReach
-        const std::array<double, kSeriesTerms + 2>& inv_k = series_reciprocals(p);
-        const auto integral = [h, &inv_k](double lo, double hi, int n) {  // (hi − lo)/k_n, lo = hi e^(−k_n h)
-          const double kh = h * (1 + n * inv_k[0]);  // inv_k[0] holds p itself
-          return std::abs(kh) > 0.5 ? (hi - lo) * inv_k[n + 1] : hi * (h * (kh == 0 ? 1.0 : -std::expm1(-kh) / kh));
+        const std::array<double, kSeriesTerms + 1>& inv_k = series_reciprocals(p);
+        const auto integral = [h, p, &inv_k](double lo, double hi, int n) {  // (hi − lo)/k_n, lo = hi e^(−k_n h)
+          const double kh = h * (1 + n * p);
+          return std::abs(kh) > 0.5 ? (hi - lo) * inv_k[n] : hi * (h * (kh == 0 ? 1.0 : -std::expm1(-kh) / kh));
         };
         double Are = 0, Aim = 0, Bre = 0, Bim = 0;
         const double al = a * epl, ah = a * eph;

@@ -91,9 +91,10 @@ std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& e
 // κ ∝ e^(c0 u) with 1/|c0| < len/4, cut at 1/|c0|·2^k from the steeper end. Equal panels in u over
 // the whole piece put almost no node where such a segment turns (the 10-point estimate then says
 // so: tolerance_not_met, errors up to 1e-3 on G1 solutions with a chord near a tangent).
+// Empty (no allocation) when no end is steep.
 std::vector<double> steep_cuts(const LaLaw& law, const LinearQ& seg) {
   const double len = seg.length(), c0 = seg.slope();
-  std::vector<double> cuts{seg.ua, seg.ub};
+  std::vector<double> cuts;
   if (!(c0 != 0 && std::isfinite(c0)) || !(law.alpha >= 0)) return cuts;
   bool at_a = false;
   double first = 0, ratio = 2, offset = 0;  // distances from the steep end: (first·ratio^k − offset)
@@ -168,13 +169,17 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, lon
     } else {
       const double Fa = law.F(seg.qa);
       const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)); };
-      // The cap on the whole piece's turning (parts turn less): beyond it NaN, as for one part.
-      const std::vector<double> cuts = std::abs(phi(seg.ub) - seg.phi_a) <= kMaxResolvedTurning
-                                           ? steep_cuts(law, seg) : std::vector<double>{seg.ua, seg.ub};
-      for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-        std::complex<double> part_coarse;
-        value[i] += plain(phi, cuts[k], cuts[k + 1], panels, evaluations, c ? &part_coarse : nullptr);
-        if (c) *c += part_coarse;
+      // Parts toward a steep end, under the cap on the whole piece's turning (parts turn less):
+      // beyond it one part, which gives NaN.
+      const std::vector<double> cuts = steep_cuts(law, seg);
+      if (cuts.empty() || !(std::abs(phi(seg.ub) - seg.phi_a) <= kMaxResolvedTurning)) {
+        value[i] = plain(phi, seg.ua, seg.ub, panels, evaluations, c);
+      } else {
+        for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+          std::complex<double> part_coarse;
+          value[i] += plain(phi, cuts[k], cuts[k + 1], panels, evaluations, c ? &part_coarse : nullptr);
+          if (c) *c += part_coarse;
+        }
       }
     }
     if (p.sign < 0) value[i] = -value[i], rough[i] = -rough[i];
