@@ -20,6 +20,10 @@ void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
                  "CSV file (- for stdin) of problems, one per row, its header naming options without dashes; "
                  "prints one result per row (JSON Lines, or CSV rows)");
   sub.add_flag("--degrees", a.degrees, "Angles given on the command line are in degrees (output angles stay radians)");
+  sub.add_option("--accept", a.accept,
+                 "Accept bound on the achieved error, relative to the curve's size (chord, or arc length for "
+                 "points), (0, 0.1]: a result beyond it is inaccurate (exit 3)")
+      ->capture_default_str();
 }
 
 int sample_count(const CommonArgs& a) {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli/command.hpp"
+#include "lac/common/accuracy.hpp"
 
 namespace lac::cli {
 
@@ -22,9 +23,12 @@ struct CommonArgs {
   std::string format = "json";
   std::string batch;
   bool degrees = false;
+  /// --accept: the accept bound relative to the size scale (common/accuracy.hpp); a result whose
+  /// achieved error exceeds it is inaccurate (exit 3).
+  double accept = kDefaultAccept;
 };
 
-/// Adds --samples, --format (json | csv, and svg when `planar`), --batch and --degrees.
+/// Adds --samples, --format (json | csv, and svg when `planar`), --batch, --degrees and --accept.
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
 
 /// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError

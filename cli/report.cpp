@@ -18,7 +18,8 @@ namespace {
 Json text_or_null(const std::string& s) { return s.empty() ? Json(nullptr) : Json(s); }
 
 Json common_keys(Status status, const std::string& message, const Json& iterations, long evaluations, double seconds,
-                 const std::string& solver, const std::string& integrator, const Residuals& residuals) {
+                 const std::string& solver, const std::string& integrator, const Residuals& residuals,
+                 const std::optional<double>& error, double accept) {
   record_status(status);
   Json j;
   j["status"] = std::string(to_string(status));
@@ -34,6 +35,8 @@ Json common_keys(Status status, const std::string& message, const Json& iteratio
   j["residuals"] = {{"position", number(residuals.position)},
                     {"angle", number(residuals.angle)},
                     {"curvature", number(residuals.curvature)}};
+  j["error"] = number(error);
+  j["accept"] = accept;
   j["segments"] = Json::array();
   return j;
 }
@@ -41,12 +44,13 @@ Json common_keys(Status status, const std::string& message, const Json& iteratio
 }  // namespace
 
 Json construction_report(const Summary& s) {
-  return common_keys(s.status, s.message, s.iterations, s.evaluations, s.seconds, s.solver, s.integrator, s.residuals);
+  return common_keys(s.status, s.message, s.iterations, s.evaluations, s.seconds, s.solver, s.integrator, s.residuals,
+                     s.error, s.accept);
 }
 
 Json evaluation_report(Status status, const std::string& message, long evaluations, double seconds,
-                       const std::string& integrator) {
-  return common_keys(status, message, nullptr, evaluations, seconds, "", integrator, {});
+                       const std::string& integrator, std::optional<double> error, double accept) {
+  return common_keys(status, message, nullptr, evaluations, seconds, "", integrator, {}, error, accept);
 }
 
 void print_report(const Report& report, const std::string& format) {

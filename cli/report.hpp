@@ -43,7 +43,8 @@ Json xyz(const Vec3& p);          ///< {"x", "y", "z"}
 Json construction_report(const Summary& summary);
 /// The same for an evaluation without a solver (eval, quadratic): iterations and solver null.
 Json evaluation_report(Status status, const std::string& message, long evaluations, double seconds,
-                       const std::string& integrator);
+                       const std::string& integrator, std::optional<double> error = {},
+                       double accept = kDefaultAccept);
 
 /// Sets length, kappa0 and kappa1 (null where not finite).
 void set_extent(Json& report, double length, double kappa0, double kappa1);

@@ -15,6 +15,9 @@ enum class Status {
   /// no descent, converged to a point where r ≠ 0, no sign change found by a search that is not
   /// complete); a solution may still exist.
   not_converged,
+  /// Finished, but the achieved error (verified, or the method's error bound) exceeds the accept
+  /// bound (common/accuracy.hpp): the value is not to be used.
+  inaccurate,
 };
 
 constexpr std::string_view to_string(Status s) {
@@ -26,11 +29,13 @@ constexpr std::string_view to_string(Status s) {
     case Status::no_solution: return "no_solution";
     case Status::numerical_failure: return "numerical_failure";
     case Status::not_converged: return "not_converged";
+    case Status::inaccurate: return "inaccurate";
   }
   return "unknown";
 }
 
-/// True when the value can be used (possibly from a fallback).
+/// True when the value can be used (possibly from a fallback): its achieved error is within the
+/// accept bound (common/accuracy.hpp); ok when it is within the accuracy target as well.
 constexpr bool usable(Status s) { return s == Status::ok || s == Status::fell_back || s == Status::tolerance_not_met; }
 
 }  // namespace lac

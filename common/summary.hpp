@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "lac/common/accuracy.hpp"
 #include "lac/common/status.hpp"
 
 namespace lac {
@@ -28,6 +29,11 @@ struct Summary {
   long constructions = 0;  ///< trial curves built (each a full evaluation of the end conditions)
   Residuals residuals;     ///< end-condition errors of the returned curve
   std::optional<double> error_estimate;  ///< of the returned curve's positions, where the method gives one
+  /// The achieved error relative to the size scale (common/accuracy.hpp): the largest of the
+  /// verified residuals (positions / chord, angles in rad, curvatures × chord) and the error
+  /// estimate / chord. Kept when the result is not usable (it says by how much it missed).
+  std::optional<double> error;
+  double accept = kDefaultAccept;  ///< the accept bound the result was graded against (relative)
   double seconds = 0;      ///< wall time of the whole call
   std::string integrator;  ///< registry name of the integrator used
   std::string solver;      ///< registry name of the solver used
@@ -47,9 +53,15 @@ struct Result {
 
   bool usable() const { return summary.usable(); }
 
-  /// Sets the final status and message. A result that is not usable keeps no curve, residuals or
-  /// error estimate: nothing of a failed solve reaches the caller as a curve.
+  /// Sets the final status and message; a usable status whose summary.error exceeds
+  /// summary.accept becomes inaccurate. A result that is not usable keeps no curve, residuals or
+  /// error estimate (summary.error stays): nothing of a failed solve reaches the caller as a curve.
   void conclude(Status status, std::string message) {
+    if (summary.error && lac::usable(status) && !(*summary.error <= summary.accept)) {
+      status = Status::inaccurate;
+      message = "achieved error " + format_number(*summary.error) + " exceeds the accept bound " +
+                format_number(summary.accept) + (message.empty() ? "" : " (" + message + ")");
+    }
     summary.status = status;
     summary.message = std::move(message);
     if (!summary.usable()) {
