@@ -1,16 +1,44 @@
-# The library `lac` (alias lac::lac): every .cpp under the library folders, one static library.
+# The library `lac` (alias lac::lac): every .cpp under the library folders, one library, static by
+# default and shared with -DBUILD_SHARED_LIBS=ON; position-independent either way, so that the
+# static library links into the Python module (python/) as well.
 #
 # Headers are included as <lac/<folder>/<file>.hpp>, in the source tree as in an installed tree. The
 # build tree gets an include folder with one symbolic link per library folder
-# (<build>/include/lac/<folder> -> <source>/<folder>) and the generated lac/version.hpp; the install
-# rules copy the same headers to <prefix>/include/lac/<folder>/.
+# (<build>/include/lac/<folder> -> <source>/<folder>) and the generated lac/version.hpp. The public
+# headers form the file set HEADERS of the target, installed under <prefix>/include/lac/<folder>/:
+# every header outside a detail/ folder, and the detail/ headers that those include (templates
+# and inline kernels). The other detail/ headers belong to the .cpp files and are not installed.
+#
+# Link dependencies: Boost and Eigen appear in the public headers (PUBLIC); Ceres and libcerf only
+# in .cpp files (PRIVATE: a consumer of the shared library does not link them; a consumer of the
+# static library links them through $<LINK_ONLY:...>, and lacConfig.cmake finds them then).
 set(LAC_LIBRARY_FOLDERS common special integrators solvers curves constructions)
 
 set(LAC_SOURCES "")
+set(LAC_HEADERS "")
 foreach(folder IN LISTS LAC_LIBRARY_FOLDERS)
   file(GLOB_RECURSE folder_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.cpp)
+  file(GLOB_RECURSE folder_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/${folder}/*.hpp)
   list(APPEND LAC_SOURCES ${folder_sources})
+  list(APPEND LAC_HEADERS ${folder_headers})
 endforeach()
+
+# Public headers: the non-detail ones, then every header they include (transitively).
+set(LAC_PUBLIC_HEADERS ${LAC_HEADERS})
+list(FILTER LAC_PUBLIC_HEADERS EXCLUDE REGEX "/detail/")
+set(lac_queue ${LAC_PUBLIC_HEADERS})
+while(lac_queue)
+  list(POP_FRONT lac_queue header)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/${header} lines REGEX "^#include \"lac/")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^#include \"lac/([^\"]+)\".*" "\\1" included "${line}")
+    if(EXISTS ${PROJECT_SOURCE_DIR}/${included} AND NOT included IN_LIST LAC_PUBLIC_HEADERS)
+      list(APPEND LAC_PUBLIC_HEADERS ${included})
+      list(APPEND lac_queue ${included})
+    endif()
+  endforeach()
+endwhile()
+list(SORT LAC_PUBLIC_HEADERS)
 
 set(LAC_BUILD_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
 file(MAKE_DIRECTORY ${LAC_BUILD_INCLUDE_DIR}/lac)
@@ -18,26 +46,29 @@ foreach(folder IN LISTS LAC_LIBRARY_FOLDERS)
   file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${LAC_BUILD_INCLUDE_DIR}/lac/${folder} SYMBOLIC)
 endforeach()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in ${LAC_BUILD_INCLUDE_DIR}/lac/version.hpp @ONLY)
+# The file set names each header by its path under the build include folder (through the links),
+# so that it installs as include/lac/<folder>/<file>.hpp.
+list(TRANSFORM LAC_PUBLIC_HEADERS PREPEND ${LAC_BUILD_INCLUDE_DIR}/lac/ OUTPUT_VARIABLE LAC_PUBLIC_HEADER_FILES)
 
-add_library(lac STATIC ${LAC_SOURCES})
+add_library(lac ${LAC_SOURCES})
 add_library(lac::lac ALIAS lac)
-set_target_properties(lac PROPERTIES VERSION ${PROJECT_VERSION} EXPORT_NAME lac)
+set_target_properties(lac PROPERTIES VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+                                     EXPORT_NAME lac POSITION_INDEPENDENT_CODE ON)
 target_compile_features(lac PUBLIC cxx_std_20)
 target_include_directories(lac PUBLIC $<BUILD_INTERFACE:${LAC_BUILD_INCLUDE_DIR}> $<INSTALL_INTERFACE:include>)
-target_link_libraries(lac PUBLIC Boost::boost Eigen3::Eigen Ceres::ceres PkgConfig::CERF)
+target_sources(lac PUBLIC FILE_SET HEADERS BASE_DIRS ${LAC_BUILD_INCLUDE_DIR}
+               FILES ${LAC_PUBLIC_HEADER_FILES} ${LAC_BUILD_INCLUDE_DIR}/lac/version.hpp)
+target_link_libraries(lac PUBLIC Boost::boost Eigen3::Eigen PRIVATE Ceres::ceres PkgConfig::CERF)
 
 if(LAC_INSTALL)
   include(GNUInstallDirs)
   include(CMakePackageConfigHelpers)
-  foreach(folder IN LISTS LAC_LIBRARY_FOLDERS)
-    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lac/${folder}
-            FILES_MATCHING PATTERN "*.hpp")
-  endforeach()
-  install(FILES ${LAC_BUILD_INCLUDE_DIR}/lac/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lac)
   install(TARGETS lac EXPORT lacTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+          FILE_SET HEADERS DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   set(LAC_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/lac)
   install(EXPORT lacTargets NAMESPACE lac:: DESTINATION ${LAC_CMAKE_DIR})
+  get_target_property(LAC_TYPE lac TYPE)  # lacConfig.cmake looks up the private dependencies of a static lac
   configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lacConfig.cmake.in ${PROJECT_BINARY_DIR}/lacConfig.cmake
                                 INSTALL_DESTINATION ${LAC_CMAKE_DIR})
   write_basic_package_version_file(${PROJECT_BINARY_DIR}/lacConfigVersion.cmake COMPATIBILITY SameMinorVersion)
