@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libbenchmark-dev           # tests, benchmarks
   clang libclang-rt-14-dev                # libFuzzer targets and sanitizer runtimes
   python3 python3-mpmath python3-numpy python3-matplotlib  # reference generators, figures
+  python3-dev pybind11-dev python3-pybind11 python3-pytest python3-distributed  # Python module lac, its tests, Dask sweeps
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,72 @@
+"""lac: log-aesthetic curves in Python (bindings of the C++ library; docs/python.md).
+
+Constructions with the names and options of the ``lac`` command line::
+
+    import lac, numpy as np
+    r = lac.g1_hermite(p0=(0, 0), theta0=0.3, p1=(1, 0), theta1=-0.4, alpha=-1.0)
+    r.status, r.message, r.usable, r.summary
+    c = r.curve
+    pts = c.eval(np.linspace(0, c.length, 1001))      # pts.x, pts.y, pts.kappa, ...
+    t = lac.solve_batch("g1", {"p0": (0, 0), "p1": (1, 0), "theta0": th0, "theta1": th1, "alpha": -1.0})
+    lac.plot(c, comb=True, lcg=True)
+
+Invalid input raises lac.InputError (a ValueError) whose message names the parameter and its range.
+"""
+from ._lac import (  # noqa: F401
+    Curve,
+    InputError,
+    LaCurve,
+    QuadraticCurve,
+    Result,
+    SpaceCurve,
+    __version__,
+    chain,
+    compound,
+    dawson,
+    erf,
+    erf_inv,
+    erfc,
+    erfc_inv,
+    erfcx,
+    erfi,
+    erfi_inv,
+    g1_hermite,
+    g2_hermite,
+    gamma_inc,
+    gamma_inc_detailed,
+    scurve,
+    space,
+)
+from ._columns import Columns  # noqa: F401
+from .batch import solve_batch  # noqa: F401
+
+
+def eval(*, alpha, lambda_, theta=None, s=None, form="auto", integrator="gauss-kronrod"):  # noqa: A001
+    """Points of the standard-form LA curve at theta or s (arrays), as ``lac eval``: columns s, x, y,
+    theta, kappa, rho, dkappa, status, error_estimate."""
+    return LaCurve(alpha, lambda_).eval(theta=theta, s=s, form=form, integrator=integrator)
+
+
+def quadratic(*, alpha, gamma, lambda_, s=None, s_from=None, s_to=None, samples=100, integrator="gauss-kronrod",
+              inverse="ours", through_inflection=False):
+    """Points of the quadratic LA curve, as ``lac quadratic``: at the arc lengths s, or `samples` points
+    from s_from to s_to (default: 99.9 % of a finite bound of the domain, else -+2/lambda_)."""
+    import math
+
+    import numpy as np
+
+    c = QuadraticCurve(alpha, gamma, lambda_, inverse=inverse, through_inflection=through_inflection)
+    if s is None:
+        lo, hi = c.s_domain
+        s0 = s_from if s_from is not None else (0.999 * lo if math.isfinite(lo) else -2.0 / lambda_)
+        s1 = s_to if s_to is not None else (0.999 * hi if math.isfinite(hi) else 2.0 / lambda_)
+        s = np.linspace(s0, s1, samples)
+    return c.eval(s, integrator=integrator)
+
+
+def plot(curve, comb=True, lcg=True, **kwargs):
+    """Figure of a curve: the curve with its curvature comb, kappa(s) and the logarithmic curvature
+    graph (lac.plotting.plot_curve; matplotlib)."""
+    from .plotting import plot_curve
+
+    return plot_curve(curve, comb=comb, lcg=lcg, **kwargs)
