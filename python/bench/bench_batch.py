@@ -18,15 +18,6 @@ import lac
 from lac import _lac
 
 
-def best(f, repeats):
-    t = []
-    for _ in range(repeats):
-        a = time.perf_counter()
-        f()
-        t.append(time.perf_counter() - a)
-    return min(t), float(np.median(t))
-
-
 def main():
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 100_000
     repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 5
@@ -35,14 +26,24 @@ def main():
     zeros, ones = np.zeros(n), np.ones(n)
     data = {"p0": (0, 0), "p1": (1, 0), "theta0": th0, "theta1": th1, "alpha": -1.0}
     print(f"N = {n} G1 Hermite problems (alpha = -1, random end angles in [-2.5, 2.5]), best / median of {repeats}\n")
-    print("| what | threads | best s | median s | per problem us | ratio to C++ loop |")
-    print("|---|---|---|---|---|---|")
-    cpp = best(lambda: _lac._g1_loop_seconds(zeros, zeros, th0, ones, zeros, th1, -1.0), repeats)
-    print(f"| C++ loop solve_g1_hermite | 1 | {cpp[0]:.4f} | {cpp[1]:.4f} | {1e6 * cpp[0] / n:.2f} | 1.00 |")
+    # The C++ loop and the batch runs alternate, so that a change of machine load hits both alike.
     cores = os.cpu_count() or 1
-    for threads in sorted({1, 2, cores}):
-        b = best(lambda: lac.solve_batch("g1", data, threads=threads), repeats)
-        print(f"| lac.solve_batch | {threads} | {b[0]:.4f} | {b[1]:.4f} | {1e6 * b[0] / n:.2f} | {b[0] / cpp[0]:.2f} |")
+    thread_counts = sorted({1, 2, cores})
+    cpp, batch = [], {t: [] for t in thread_counts}
+    for _ in range(repeats):
+        cpp.append(_lac._g1_loop_seconds(zeros, zeros, th0, ones, zeros, th1, -1.0))
+        for threads in thread_counts:
+            a = time.perf_counter()
+            lac.solve_batch("g1", data, threads=threads)
+            batch[threads].append(time.perf_counter() - a)
+    cpp = np.array(cpp)
+    print("| what | threads | best s | median s | per problem us (best) | best / best C++ | median of run-wise ratios |")
+    print("|---|---|---|---|---|---|---|")
+    print(f"| C++ loop solve_g1_hermite | 1 | {cpp.min():.4f} | {np.median(cpp):.4f} | {1e6 * cpp.min() / n:.2f} | 1.00 | 1.00 |")
+    for threads in thread_counts:
+        b = np.array(batch[threads])
+        print(f"| lac.solve_batch | {threads} | {b.min():.4f} | {np.median(b):.4f} | {1e6 * b.min() / n:.2f} | "
+              f"{b.min() / cpp.min():.2f} | {np.median(b / cpp):.2f} |")
 
     print("\nPer-call overhead of the scalar functions (median of 2000 calls; C++ = the summary's seconds)\n")
     print("| call | Python us | C++ us | overhead us |")

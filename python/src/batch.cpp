@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <thread>
 
 #include "bindings.hpp"
@@ -75,44 +77,54 @@ PointColumn point_column(py::handle h, size_t n, const char* name) {
   return {column(xs, n, name), column(ys, n, name)};
 }
 
-/// The output columns of every row.
+/// A numpy column of n values and its buffer, filled with the GIL released.
+template <class T>
+struct OutColumn {
+  py::array_t<T> array;
+  T* data;
+  OutColumn(size_t n, T fill) : array(py::ssize_t(n)), data(array.mutable_data()) { std::fill(data, data + n, fill); }
+};
+
+/// The output columns of every row, written straight into numpy arrays (allocated with the GIL
+/// held); messages are rare (rows not ok) and kept sparse.
 struct Out {
-  std::vector<lac::Status> status;
-  std::vector<std::string> message;
-  std::vector<double> length, kappa0, kappa1, seconds, error, accept;
-  std::vector<int> iterations;
-  std::vector<long> evaluations;
-  std::vector<double> lambda0;    ///< triangle, compound: Λ of segment 0 in user units (TrianglePiece::lambda_user)
-  std::vector<uint8_t> invalid;  ///< the row's input was rejected (status "invalid_input", as the CLI's batch)
+  std::vector<uint8_t> status;   ///< lac::Status, or kInvalid: the row's input was rejected
+  OutColumn<double> length, kappa0, kappa1, seconds, error, accept;
+  OutColumn<int> iterations;
+  OutColumn<long> evaluations;
+  std::optional<OutColumn<double>> lambda0;  ///< triangle, compound: Λ of segment 0 (TrianglePiece::lambda_user)
+  std::mutex mutex;
+  std::vector<std::pair<size_t, std::string>> messages;
+  static constexpr uint8_t kInvalid = 255;  ///< status "invalid_input", as the CLI's batch
+
   explicit Out(size_t n)
-      : status(n), message(n), length(n, kNaN), kappa0(n, kNaN), kappa1(n, kNaN), seconds(n), error(n, kNaN), accept(n),
-        iterations(n), evaluations(n), invalid(n) {}
+      : status(n), length(n, kNaN), kappa0(n, kNaN), kappa1(n, kNaN), seconds(n, 0), error(n, kNaN), accept(n, kNaN),
+        iterations(n, 0), evaluations(n, 0) {}
+  void message(size_t i, const std::string& text) {
+    std::lock_guard<std::mutex> lock(mutex);
+    messages.emplace_back(i, text);
+  }
   template <class R>
   void set(size_t i, const R& r) {
     const lac::Summary& s = r.summary;
-    status[i] = s.status;
-    if (!s.message.empty()) message[i] = s.message;
+    status[i] = uint8_t(s.status);
+    if (!s.message.empty()) message(i, s.message);
     if (r.usable() && !r.curve.segments().empty()) {
-      length[i] = r.curve.length();
-      kappa0[i] = r.curve.kappa_at(0);
-      kappa1[i] = r.curve.kappa_at(r.curve.length());
+      length.data[i] = r.curve.length();  // κ as the CLI's report (cli/report_curves.cpp)
+      kappa0.data[i] = r.curve.kappa_at(0);
+      kappa1.data[i] = r.curve.kappa_at(r.curve.length());
     }
-    seconds[i] = s.seconds;
-    error[i] = s.error ? *s.error : kNaN;
-    accept[i] = s.accept;
-    iterations[i] = s.iterations;
-    evaluations[i] = s.evaluations;
+    seconds.data[i] = s.seconds;
+    error.data[i] = s.error ? *s.error : kNaN;
+    accept.data[i] = s.accept;
+    iterations.data[i] = s.iterations;
+    evaluations.data[i] = s.evaluations;
   }
   void set_input_error(size_t i, const std::string& what) {
-    invalid[i] = 1;
-    message[i] = what;
+    status[i] = kInvalid;
+    message(i, what);
   }
 };
-
-template <class T>
-py::array_t<T> to_array(const std::vector<T>& v) {
-  return py::array_t<T>(py::ssize_t(v.size()), v.data());
-}
 
 /// Runs row(i) for i in [0, n) on `threads` threads (0: all cores), in chunks from a shared counter.
 template <class F>
@@ -209,19 +221,19 @@ py::dict solve_batch(const std::string& kind, py::dict data, int threads, py::kw
   } else {
     const lac::TriangleOptions o = triangle_options(options, "solve_batch");
     const auto &a0 = P.at("a0"), &a1 = P.at("a1"), &a2 = P.at("a2");
-    out.lambda0.assign(rows, kNaN);
+    out.lambda0.emplace(rows, kNaN);
     if (triangle) {
       const auto& alpha = N.at("alpha");
       run([&](size_t i) {
         auto g = lac::solve_g1({a0[i], a1[i], a2[i]}, alpha[i], o);
-        out.lambda0[i] = g.info.pieces.empty() ? kNaN : g.info.pieces[0].lambda_user;
+        out.lambda0->data[i] = g.info.pieces.empty() ? kNaN : g.info.pieces[0].lambda_user;
         return g;
       });
     } else {
       const auto &alpha0 = N.at("alpha0"), &alpha1 = N.at("alpha1"), &r = N.at("r");
       run([&](size_t i) {
         auto g = lac::solve_compound({a0[i], a1[i], a2[i]}, alpha0[i], alpha1[i], r[i], o);
-        out.lambda0[i] = g.info.pieces.empty() ? kNaN : g.info.pieces[0].lambda_user;
+        out.lambda0->data[i] = g.info.pieces.empty() ? kNaN : g.info.pieces[0].lambda_user;
         return g;
       });
     }
@@ -232,32 +244,38 @@ py::dict solve_batch(const std::string& kind, py::dict data, int threads, py::kw
   py::array status(py::dtype("<U" + std::to_string(kStatusWidth)), std::vector<py::ssize_t>{py::ssize_t(rows)});
   auto* chars = static_cast<uint32_t*>(status.mutable_data());
   std::fill(chars, chars + rows * kStatusWidth, 0u);
-  std::vector<uint8_t> usable(rows);
+  auto usable = py::array_t<bool>(py::ssize_t(rows));
+  bool* use = usable.mutable_data();
   for (size_t i = 0; i < rows; ++i) {
-    const std::string_view s = out.invalid[i] ? std::string_view("invalid_input") : lac::to_string(out.status[i]);
+    const bool invalid = out.status[i] == Out::kInvalid;
+    const auto st = lac::Status(out.status[i]);
+    const std::string_view s = invalid ? std::string_view("invalid_input") : lac::to_string(st);
     for (size_t k = 0; k < s.size(); ++k) chars[i * kStatusWidth + k] = uint32_t(s[k]);
-    usable[i] = !out.invalid[i] && lac::usable(out.status[i]);
+    use[i] = !invalid && lac::usable(st);
   }
   py::array message(py::dtype("O"), std::vector<py::ssize_t>{py::ssize_t(rows)});
   auto** objs = static_cast<PyObject**>(message.mutable_data());
   for (size_t i = 0; i < rows; ++i) {
-    py::object v = out.message[i].empty() ? py::object(py::none()) : py::object(py::str(out.message[i]));
     Py_XDECREF(objs[i]);
-    objs[i] = v.release().ptr();
+    objs[i] = py::none().release().ptr();
+  }
+  for (const auto& [i, text] : out.messages) {
+    Py_XDECREF(objs[i]);
+    objs[i] = py::str(text).release().ptr();
   }
   py::dict d;
   d["status"] = status;
   d["message"] = message;
-  d["length"] = to_array(out.length);
-  d["kappa0"] = to_array(out.kappa0);
-  d["kappa1"] = to_array(out.kappa1);
-  d["iterations"] = to_array(out.iterations);
-  d["evaluations"] = to_array(out.evaluations);
-  d["seconds"] = to_array(out.seconds);
-  d["error"] = to_array(out.error);
-  d["accept"] = to_array(out.accept);
-  d["usable"] = py::array_t<bool>(py::ssize_t(rows), reinterpret_cast<const bool*>(usable.data()));
-  if (!out.lambda0.empty()) d["lambda0_user"] = to_array(out.lambda0);
+  d["length"] = out.length.array;
+  d["kappa0"] = out.kappa0.array;
+  d["kappa1"] = out.kappa1.array;
+  d["iterations"] = out.iterations.array;
+  d["evaluations"] = out.evaluations.array;
+  d["seconds"] = out.seconds.array;
+  d["error"] = out.error.array;
+  d["accept"] = out.accept.array;
+  d["usable"] = usable;
+  if (out.lambda0) d["lambda0_user"] = out.lambda0->array;
   d["_wall_seconds"] = wall;
   return d;
 }
