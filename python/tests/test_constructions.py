@@ -69,6 +69,13 @@ def test_g1_options_and_degrees():
     assert a.usable and b.usable
     assert a.summary["solver"] != b.summary["solver"] or a.summary["integrator"] != b.summary["integrator"]
     assert a.curve.length == pytest.approx(b.curve.length, rel=1e-10)
+    t = lac.g1_hermite(points=[(0, 0), (1, 0), (2, 1)], alpha=2.0, solver="triangle")
+    u = lac.g1_hermite(points=[(0, 0), (1, 0), (2, 1)], alpha=2.0)
+    assert t.usable and t.summary["solver"] != u.summary["solver"]
+    assert t.curve.length == pytest.approx(u.curve.length, rel=1e-9)
+    sc = lac.scurve([(0, 0), (1, 0), (2, 1), (3, 1)], alpha=-1.0, solver="s-curve")
+    assert sc.usable and sc.curve.length == pytest.approx(lac.scurve([(0, 0), (1, 0), (2, 1), (3, 1)]).curve.length,
+                                                          rel=1e-9)
     w = lac.g1_hermite(p0=(0, 0), theta0=0.3, p1=(1, 0), theta1=-0.4, alpha=-1.0, winding=1)
     assert w.usable and w.info["turning"] == pytest.approx(-0.7 + 2 * math.pi, abs=1e-9)
 
