@@ -37,10 +37,16 @@ CLI::Option* column_option(CLI::App& sub, const std::string& name) {
   CLI::Option* opt = name.empty() ? nullptr : sub.get_option_no_throw("--" + name);
   if (opt == nullptr) {
     std::string names;
+    std::vector<std::string> candidates;
     for (const CLI::Option* o : sub.get_options())
       for (const std::string& l : o->get_lnames())
-        if (l != "help" && l != "format" && l != "batch") names.append(names.empty() ? "" : ", ").append(l);
-    throw_input_error("lac", "batch", "column '" + name + "' names no option of this command (" + names + ")");
+        if (l != "help" && l != "format" && l != "batch") {
+          names.append(names.empty() ? "" : ", ").append(l);
+          candidates.push_back(l);
+        }
+    const auto guess = closest_name(name, candidates);
+    throw_input_error("lac", "batch", "column '" + echo_value(name) + "' names no option of this command" +
+                                          (guess ? "; did you mean '" + *guess + "'?" : "") + " (" + names + ")");
   }
   return opt;
 }
@@ -113,9 +119,16 @@ void run_batch(CLI::App& sub, const CommonArgs& common, const std::function<Repo
   }
   std::istream& in = common.batch == "-" ? std::cin : file;
   std::vector<std::string> header, cells;
-  if (!read_csv_record(in, header)) throw_input_error("lac", "batch", "'" + common.batch + "' has no header line");
+  if (!read_csv_record(in, header, true)) throw_input_error("lac", "batch", "'" + common.batch + "' has no header line");
   std::vector<CLI::Option*> options;
-  for (const std::string& name : header) options.push_back(column_option(sub, name));
+  for (size_t k = 0; k < header.size(); ++k) {
+    options.push_back(column_option(sub, header[k]));
+    for (size_t j = 0; j < k; ++j)
+      if (options[j] == options[k])  // the same option twice (also under two of its names)
+        throw_input_error("lac", "batch", "column '" + echo_value(header[k]) + "' (column " + std::to_string(k + 1) +
+                                              ") repeats the option of column " + std::to_string(j + 1) + " ('" +
+                                              echo_value(header[j]) + "'): each option may have one column");
+  }
   Sink sink;
   BatchWriter writer(sink, common.format == "csv");
   for (long row = 1; read_csv_record(in, cells); ++row) {
@@ -126,18 +139,26 @@ void run_batch(CLI::App& sub, const CommonArgs& common, const std::function<Repo
                                               std::to_string(header.size()));
       for (size_t k = 0; k < cells.size(); ++k) {
         if (cells[k].empty()) continue;
+        if (const size_t nul = cells[k].find('\0'); nul != std::string::npos)
+          throw_input_error("lac", header[k], "'" + echo_value(cells[k]) + "': a NUL byte (at character " +
+                                                  std::to_string(nul + 1) + ") is not text");
         try {
           options[k]->clear();
           options[k]->add_result(cells[k]);
           options[k]->run_callback();
         } catch (const CLI::ParseError& e) {
-          throw_input_error("lac", header[k], "'" + cells[k] + "': " + e.what());
+          // CLI11's message repeats the value: each copy shortened as the echo.
+          std::string why = e.what();
+          const std::string shown = echo_value(cells[k]);
+          for (size_t at = why.find(cells[k]); at != std::string::npos; at = why.find(cells[k], at + shown.size()))
+            why.replace(at, cells[k].size(), shown);
+          throw_input_error("lac", header[k], "'" + shown + "': " + echo_value(why, 400));
         }
       }
       writer.result(row, solve());
     } catch (const InputError& e) {
       record_invalid_row();
-      writer.invalid(row, without_lac_prefix(e.what()));
+      writer.invalid(row, echo_value(without_lac_prefix(e.what()), 1000));  // a thrower may echo a whole cell
     }
     sink.maybe_flush();
   }

@@ -20,6 +20,7 @@
 #include <complex>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,20 @@ void record_invalid_row();
 /// An InputError's message without the "lac …: " its CLI thrower put in front (run() adds the
 /// command's own); a library function's name ("LaCurve: …") stays.
 std::string without_lac_prefix(const std::string& message);
+
+/// An InputError's message as `lac <command>: …` prints it: without the "lac …: " of a CLI
+/// thrower and without a leading "<command>: " of the library (e.g. "g1: alpha …" under
+/// `lac g1`), so the command is named once.
+std::string without_command_prefix(const std::string& message, const std::string& command);
+
+/// A user's value for an error message: control characters (NUL included, which would end the
+/// message) as \xNN, and at most `max_chars` characters of it followed by "…".
+std::string echo_value(const std::string& value, size_t max_chars = 60);
+
+/// The candidate closest to `typed`, if close enough to be a likely typo (no guess for names of
+/// 1 or 2 characters, at most 1 edit up to 5 characters, else 2); names are compared without
+/// leading dashes, and only with candidates having as many dashes as `typed`.
+std::optional<std::string> closest_name(const std::string& typed, const std::vector<std::string>& candidates);
 
 std::vector<CommandSetup>& command_registry();
 

@@ -13,11 +13,13 @@ std::string trimmed(const std::string& s) {
 
 }  // namespace
 
-bool read_csv_record(std::istream& in, std::vector<std::string>& fields) {
+bool read_csv_record(std::istream& in, std::vector<std::string>& fields, bool first) {
   std::string line;
   do {
     if (!std::getline(in, line)) return false;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (first && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // UTF-8 byte order mark
+    first = false;
   } while (trimmed(line).empty() || line[0] == '#');
   fields.clear();
   std::string field;

@@ -10,7 +10,8 @@
 namespace lac::cli {
 
 /// The next record's fields into `fields`; false at the end of the input. InputError "batch" for
-/// a quoted field that is not closed.
-bool read_csv_record(std::istream& in, std::vector<std::string>& fields);
+/// a quoted field that is not closed. `first`: this is the first record of the input, which may
+/// begin with a UTF-8 byte order mark (as spreadsheets write it): the mark is skipped.
+bool read_csv_record(std::istream& in, std::vector<std::string>& fields, bool first = false);
 
 }  // namespace lac::cli

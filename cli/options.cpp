@@ -34,6 +34,11 @@ int sample_count(const CommonArgs& a) {
 
 double radians(double value, const CommonArgs& a) { return a.degrees ? value * (std::numbers::pi / 180.0) : value; }
 
+std::string alpha_range_text(double min_abs, double max_abs) {
+  if (!(min_abs > 0)) return interval_text(-max_abs, max_abs, true, true);
+  return "0 or " + format_number(min_abs) + " <= |alpha| <= " + format_number(max_abs);
+}
+
 void throw_missing(const char* name) { throw_input_error("lac", name, std::string("--") + name + " is required"); }
 
 }  // namespace lac::cli

@@ -38,6 +38,11 @@ int sample_count(const CommonArgs& a);
 /// An angle from the command line in radians (it was given in degrees with --degrees).
 double radians(double value, const CommonArgs& a);
 
+/// The range of a slope α for help texts, from a construction's constants (e.g. kG1MinAbsAlpha,
+/// kG1MaxAbsAlpha), so that the help says what the library accepts: "[-5, 5]" when min_abs is 0,
+/// else "0 or 0.1 <= |alpha| <= 5".
+std::string alpha_range_text(double min_abs, double max_abs);
+
 /// InputError "--<name> is required", naming it.
 [[noreturn]] void throw_missing(const char* name);
 /// The value of an option a command needs; InputError naming it when it was given neither on

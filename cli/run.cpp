@@ -49,11 +49,11 @@ std::vector<double> parse_tuple(const std::string& text, size_t expected, const 
       used = 0;
     }
     if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos)
-      throw_input_error("lac", parameter, "'" + text + "' is not a comma-separated list of " + std::to_string(expected) + " numbers");
+      throw_input_error("lac", parameter, "'" + echo_value(text) + "' is not a comma-separated list of " + std::to_string(expected) + " numbers");
     v.push_back(x);
   }
   if (v.size() != expected)
-    throw_input_error("lac", parameter, "'" + text + "' has " + std::to_string(v.size()) + " numbers; expected " + std::to_string(expected));
+    throw_input_error("lac", parameter, "'" + echo_value(text) + "' has " + std::to_string(v.size()) + " numbers; expected " + std::to_string(expected));
   for (double x : v) require_finite("lac", parameter, x);
   return v;
 }
@@ -64,7 +64,7 @@ std::vector<std::vector<double>> parse_points(const std::string& text, size_t ex
   std::string item;
   while (ss >> item) pts.push_back(parse_tuple(item, 2, parameter));
   if (pts.size() != expected_points)
-    throw_input_error("lac", parameter, "'" + text + "' has " + std::to_string(pts.size()) + " points; expected " + std::to_string(expected_points) + " as \"x0,y0 x1,y1 ...\"");
+    throw_input_error("lac", parameter, "'" + echo_value(text) + "' has " + std::to_string(pts.size()) + " points; expected " + std::to_string(expected_points) + " as \"x0,y0 x1,y1 ...\"");
   return pts;
 }
 
@@ -116,7 +116,7 @@ std::string strip_dashes(const std::string& s) { return s.substr(std::min(s.find
 /// The candidate closest to `typed`, if it is close enough to be a likely typo: no guess for
 /// names of 1 or 2 characters, at most 1 edit up to 5 characters, else 2. Options are compared
 /// with options of the same kind (--long with --long, -s with -s), without their dashes.
-std::optional<std::string> closest(const std::string& typed, const std::vector<std::string>& candidates) {
+std::optional<std::string> closest_in(const std::string& typed, const std::vector<std::string>& candidates) {
   const std::string t = strip_dashes(typed);
   const size_t dashes = typed.size() - t.size();
   const size_t limit = t.size() <= 2 ? 0 : t.size() <= 5 ? 1 : 2;
@@ -167,7 +167,7 @@ std::optional<std::string> unplaced_argument(CLI::App& app) {
     // A command with subcommands ("special") expects one first: "special gamma-in --a 1".
     const std::string& first = left.front();
     if (!children.empty() && !first.empty() && first[0] != '-') {
-      const auto guess = closest(first, children);
+      const auto guess = closest_in(first, children);
       return prefix + "unknown subcommand \"" + first + "\"" +
              (guess ? "; did you mean \"" + *guess + "\"?" : " (see " + command_name(cmd) + " --help)");
     }
@@ -180,7 +180,7 @@ std::optional<std::string> unplaced_argument(CLI::App& app) {
         for (const std::string& l : o->get_lnames()) names.push_back("--" + l);
         for (const std::string& s : o->get_snames()) names.push_back("-" + s);
       }
-      const auto guess = closest(name, names);
+      const auto guess = closest_in(name, names);
       return prefix + "unknown option " + name + (guess ? "; did you mean " + *guess + "?" : " (see " + command_name(cmd) + " --help)");
     }
     return prefix + "unexpected argument \"" + first + "\" (see " + command_name(cmd) + " --help)";
@@ -223,6 +223,36 @@ std::string without_lac_prefix(const std::string& message) {
   return message;
 }
 
+std::string without_command_prefix(const std::string& message, const std::string& command) {
+  std::string text = without_lac_prefix(message);
+  if (!command.empty() && text.size() > command.size() + 2 && text.compare(0, command.size(), command) == 0 &&
+      text.compare(command.size(), 2, ": ") == 0)
+    text.erase(0, command.size() + 2);
+  return text;
+}
+
+std::string echo_value(const std::string& value, size_t max_chars) {
+  std::string out;
+  size_t chars = 0;
+  for (size_t i = 0; i < value.size(); ++i) {
+    const auto u = static_cast<unsigned char>(value[i]);
+    if ((u & 0xC0) != 0x80 && chars++ == max_chars) return out + "…";  // counted by UTF-8 lead bytes
+    if (u < 0x20 || u == 0x7f) {
+      const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else {
+      out += value[i];
+    }
+  }
+  return out;
+}
+
+std::optional<std::string> closest_name(const std::string& typed, const std::vector<std::string>& candidates) {
+  return closest_in(typed, candidates);
+}
+
 void record_status(Status status) { unusable_recorded() = unusable_recorded() || !lac::usable(status); }
 void record_invalid_row() { invalid_rows() = true; }
 
@@ -259,7 +289,8 @@ int lac::cli::run(int argc, char** argv) {
     std::cerr << name << ": " << one_line(e.what()) << " (see " << name << " --help)\n";
     return kExitInvalidInput;
   } catch (const lac::InputError& e) {
-    std::cerr << command_name(selected_command(app)) << ": " << one_line(without_lac_prefix(e.what())) << "\n";
+    const CLI::App* cmd = selected_command(app);
+    std::cerr << command_name(cmd) << ": " << one_line(without_command_prefix(e.what(), cmd->get_name())) << "\n";
     return kExitInvalidInput;
   } catch (const std::exception& e) {
     std::cerr << command_name(selected_command(app)) << ": internal error: " << one_line(e.what()) << "\n";

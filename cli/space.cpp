@@ -36,6 +36,7 @@ Report solve(const SpaceArgs& a) {
   o.integrator.method = parse_ode_method(a.integrator);
   if (a.tol) o.integrator.rtol = *a.tol, o.integrator.atol = 0.1 * *a.tol;
   o.tangent_tolerance = a.tangent_tolerance;
+  o.accept = a.common.accept;
   const int n = sample_count(a.common);
   const Result<SpaceCurve, SpaceInfo> res =
       compound ? solve_compound_space_segment(ends,

@@ -48,7 +48,9 @@ void SCurveOptions::validate() const {
   if (max_evaluations < 1) throw_input_error("scurve", "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
   if (bracket_doublings < 1 || bracket_doublings > 2000)
     throw_input_error("scurve", "bracket_doublings", bracket_doublings, "[1, 2000]");
-  if (!(accept > 0 && accept <= 1)) throw_input_error("scurve", "accept", accept, "(0, 1]");
+  validate_accept("scurve", accept);
+  if (!(accuracy > 0 && accuracy <= accept))
+    throw_input_error("scurve", "accuracy", accuracy, "(0, accept] with accept = " + format_number(accept));
   std::visit([](const auto& m) { m.validate(); }, integrator);
 }
 
@@ -61,7 +63,8 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     require_finite("scurve", names[k][1], P[k].imag());
   }
   if (!(alpha < 0 && alpha >= -kG2MaxAbsAlpha))
-    throw_input_error("scurve", "alpha", alpha, "[-5, 0) (an inflection needs alpha < 0, 004 §2.3)");
+    throw_input_error("scurve", "alpha", alpha,
+                      "[" + format_number(-kG2MaxAbsAlpha) + ", 0) (an inflection needs alpha < 0, 004 §2.3)");
   // The construction is similarity invariant: work on the control polygon moved to P0 = 0 and
   // scaled by 1/ext, ext its largest extent. Finite coordinates can still have differences
   // beyond the double range (R10 in docs/robustness.md): refused here, not an infinite curve.
@@ -277,9 +280,12 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
   sum.residuals = {residual_position, residual_angle, std::nullopt};
   const double chord = std::abs(d03);
   const double worst = std::max(residual_position / chord, residual_angle);
-  if (!(worst <= o.accept))
-    return finish(Status::tolerance_not_met, std::string(o.verify ? "verified" : "unverified") + " residual " +
-                                                 format_number(worst) + " above accept " + format_number(o.accept));
+  sum.error = std::max(worst, sum.error_estimate.value_or(0.0) / chord);
+  sum.accept = o.accept;
+  if (!(*sum.error <= o.accuracy))
+    return finish(Status::tolerance_not_met, std::string(o.verify ? "verified" : "unverified") + " error " +
+                                                 format_number(*sum.error) + " above the accuracy target " +
+                                                 format_number(o.accuracy));
   return finish(Status::ok, "");
 }
 

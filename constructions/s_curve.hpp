@@ -40,7 +40,12 @@ struct SCurveOptions {
   /// deviation from it as summary.error_estimate; without it they come from the integrator (no
   /// error estimate).
   bool verify = true;
-  double accept = 1e-10;  ///< largest residual (end point relative to |P3 − P0|, end angles in rad) for status ok
+  /// Accuracy target (common/accuracy.hpp): largest residual (end point relative to |P3 − P0|, end
+  /// angles in rad) for status ok, (0, accept].
+  double accuracy = 1e-10;
+  /// Accept bound on summary.error (the residuals as above and error_estimate / |P3 − P0|): beyond
+  /// it the result is inaccurate (not usable), between accuracy and it tolerance_not_met.
+  double accept = kDefaultAccept;
   void validate() const;  ///< InputError naming the option (the integrator's own check included)
 };
 

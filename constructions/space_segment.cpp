@@ -248,8 +248,10 @@ bool in_box(const Vec2& x) {
 using SpaceResult = Result<SpaceCurve, SpaceInfo>;
 
 // The result of one construction: its curve (when defined), end-tangent and end-point errors and
-// status; the counters are the caller's.
-SpaceResult to_result(const Problem& pb, const Trial& t) {
+// status; the counters are the caller's. summary.error (common/accuracy.hpp): the end-point
+// residual / |P1 − P0| and, when v1 is a condition of the result (`tangent_is_condition`: a solve,
+// not a construction at given unknowns, where v1 only enters residuals.angle), the end-tangent error.
+SpaceResult to_result(const Problem& pb, const Trial& t, bool tangent_is_condition = true) {
   const SpaceSegmentOptions& o = *pb.opt;
   SpaceResult r;
   r.summary.integrator = std::string(to_string(o.integrator.method));
@@ -277,12 +279,19 @@ SpaceResult to_result(const Problem& pb, const Trial& t) {
   const double tangent_error = tangent_angle(t.end_tangent_local, pb.target);
   r.info.end_tangent = (pb.local_to_user * mirror * t.end_tangent_local).normalized();
   const Vec3 end_user = placement.origin + placement.matrix * t.end.p;
-  r.summary.residuals.angle = tangent_error;
-  r.summary.residuals.position =
+  const double position_error =
       (end_user - (pb.origin + pb.local_to_user * Vec3(pb.distance * std::cos(pb.theta), pb.distance * std::sin(pb.theta), 0)))
           .norm();
+  r.summary.residuals.angle = tangent_error;
+  r.summary.residuals.position = position_error;
+  r.summary.error = tangent_is_condition ? std::max(position_error / pb.distance, tangent_error)
+                                         : position_error / pb.distance;
+  r.summary.accept = o.accept;
   if (pb.compound) r.info.joint = placement.origin + placement.matrix * t.joint.p;
-  r.summary.status = tangent_error <= o.tangent_tolerance ? Status::ok : Status::tolerance_not_met;
+  const bool met = tangent_error <= o.tangent_tolerance;
+  r.conclude(met ? Status::ok : Status::tolerance_not_met,
+             met ? "" : "end tangent missed by " + format_number(tangent_error) + " rad (tangent_tolerance " +
+                            format_number(o.tangent_tolerance) + ")");
   return r;
 }
 
@@ -463,7 +472,7 @@ SpaceResult construct_only(const char* who, const SpaceEndpoints& ends, const Co
   pb.compound = compound;
   pb.spec = spec;
   pb.opt = &opt;
-  SpaceResult r = to_result(pb, construct(pb, lambda0, nu0));
+  SpaceResult r = to_result(pb, construct(pb, lambda0, nu0), false);
   r.summary.constructions = 1;
   r.summary.seconds = seconds_since(t_begin);
   return r;
@@ -474,6 +483,7 @@ SpaceResult construct_only(const char* who, const SpaceEndpoints& ends, const Co
 void SpaceSegmentOptions::validate() const {
   constexpr const char* who = "SpaceSegmentOptions";
   if (!(tangent_tolerance >= 1e-14 && tangent_tolerance < 1)) throw_input_error(who, "tangent_tolerance", tangent_tolerance, "[1e-14, 1)");
+  validate_accept(who, accept);
   integrator.validate();
   if (!(max_turning > 0)) throw_input_error(who, "max_turning", max_turning, "(0, inf]");
   if (!(max_torsion_turning > 0)) throw_input_error(who, "max_torsion_turning", max_torsion_turning, "(0, inf]");
@@ -518,8 +528,8 @@ Result<SpaceCurve, SpaceInfo> drawable_endpoints(const CompoundSpaceSpec& spec, 
   // v1 := the construction's own end tangent, which it then meets exactly.
   r.info.ends.v1 = r.info.end_tangent;
   r.summary.residuals.angle = 0.0;
-  r.summary.status = Status::ok;
-  r.summary.message.clear();
+  r.summary.error = *r.summary.residuals.position / r.info.ends.p1.norm();
+  r.conclude(Status::ok, "");
   return r;
 }
 

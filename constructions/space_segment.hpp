@@ -54,6 +54,9 @@ struct SpaceSegmentOptions {
   /// Any method of the N-D registry; newton is the fastest here (see docs/space_curves.md).
   NonlinearMethod solver = NonlinearMethod::newton;
   double tangent_tolerance = 1e-11;  ///< success: end-tangent angle error ≤ this (rad)
+  /// Accept bound (common/accuracy.hpp) on summary.error, the larger of the end-point residual
+  /// / |P1 − P0| and the end-tangent angle error (rad): a construction beyond it is inaccurate.
+  double accept = kDefaultAccept;
   double max_turning = 4 * M_PI;     ///< a trial curve may turn its tangent by at most this (∫κ ds)
   double max_torsion_turning = 40 * M_PI;  ///< and rotate its frame about T by at most this (∫τ ds)
   double max_length = 100;           ///< and be at most this long in standard form (ρ(0) = 1)
@@ -86,7 +89,8 @@ struct SpaceInfo {
 
 /// Solves the G1 segment. InputError for invalid input (zero or non-finite vectors, P1 = P0,
 /// v0 parallel to P1 − P0, parameters out of range). Status ok when the end tangent is met within
-/// tangent_tolerance; otherwise the curve is empty and the status says why: max_iterations (the
+/// tangent_tolerance (summary.error: the larger of the end-point residual / |P1 − P0| and the
+/// end-tangent error in rad, inaccurate beyond options.accept); otherwise the curve is empty and the status says why: max_iterations (the
 /// ODE budget was spent, or the solver run that came closest hit its cap), not_converged (the
 /// search — the start and the screened grid, both hands — found no curve; one may still exist),
 /// or the closest run's own failure status (docs/space_curves.md).
@@ -98,7 +102,8 @@ Result<SpaceCurve, SpaceInfo> solve_compound_space_segment(const SpaceEndpoints&
 
 /// The construction at given (Λ0, ν0) without solving (v1 only enters the end-tangent residual):
 /// the curve that meets P0, v0, P1 for these unknowns, status ok or tolerance_not_met by its
-/// end-tangent error. Without a curve: no_solution when these unknowns give none (the curve ends
+/// end-tangent error (summary.error: the end-point residual / |P1 − P0| only, v1 not being a
+/// condition of the construction; inaccurate beyond options.accept). Without a curve: no_solution when these unknowns give none (the curve ends
 /// before the cone, no positive ν1 continues the torsion law at the joint), max_iterations when a
 /// cap of the options (max_turning, max_torsion_turning, max_length) or the integrator's step cap
 /// ends it first, numerical_failure when its laws are not representable in double precision.
