@@ -307,6 +307,26 @@ TEST(G2Hermite, BadInputThrowsNamingTheParameter) {
   o = {};
   o.max_iterations = 0;
   expect_param(good, "max_iterations", o);
+  o = {};
+  o.accuracy = 2;
+  expect_param(good, "accuracy", o);
+  o = {};
+  o.accept = 0.2;
+  expect_param(good, "accept", o);
+  o = {};
+  o.winding = 101;
+  expect_param(good, "winding", o);
+  o = {};
+  o.max_turning = 3;
+  expect_param(good, "max_turning", o);
+  // The accept bound of the options is the one the result is graded against.
+  o = {};
+  o.accept = 1e-4;
+  const G2Result graded = solve_g2(good, o);
+  ASSERT_TRUE(graded.usable()) << graded.summary.message;
+  EXPECT_EQ(graded.summary.accept, 1e-4);
+  ASSERT_TRUE(graded.summary.error);
+  EXPECT_LE(*graded.summary.error, 1e-10);
   // simplex is a G2 solver now (the N-D registry's); a 1-D root finder's name is not.
   EXPECT_THROW(parse_g2_solver("secant"), InputError);
   EXPECT_EQ(parse_g2_solver("simplex"), G2Solver::simplex);
