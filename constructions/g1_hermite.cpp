@@ -979,9 +979,10 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
       if (!converged) failure = "the root method did not converge in the sign bracket";
     }
   }
-  // The end point is off by L|f| = |f|/Re∫ chords: where Re∫ is small (loops) a few Newton steps
-  // bring |f| to tolerance·Re∫.
-  for (int it = 0; it < 4 && best.ok && best.I.real() > 0 && std::abs(best.f) > o.tolerance * best.I.real(); ++it) {
+  // The end point is off by L|f| = |f|/Re∫ chords: where Re∫ is small (long loops) and that exceeds
+  // a tenth of `accuracy`, a few Newton steps more.
+  for (int it = 0; it < 4 && best.ok && best.I.real() > 0 && std::abs(best.f) > 0.1 * o.accuracy * best.I.real();
+       ++it) {
     const double x = xbest - best.f / best.df;
     if (!std::isfinite(x)) break;
     const Trial t = nz.evaluate(x);
@@ -1025,11 +1026,22 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
 
   // The windings to try: the given one, or every |Δ_k| ≤ max_turning, least first (on a tie the
   // lesser |k|, then the left turn).
-  std::vector<int> windings;
+  // At most 205 windings (|Δ| ≤ 200π): a fixed buffer, no allocation on the fast path.
+  struct Windings {
+    std::array<int, 208> k{};
+    size_t n = 0;
+    void push_back(int v) { k[n++] = v; }
+    int front() const { return k[0]; }
+    int* begin() { return k.data(); }
+    int* end() { return k.data() + n; }
+  } windings;
   if (o.winding) {
     windings.push_back(*o.winding);
   } else {
-    for (int k = -101; k <= 101; ++k)
+    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
+    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
+    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
+    for (int k = k_lo; k <= k_hi; ++k)
       if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
     std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
       const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
@@ -1140,8 +1152,8 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   res.info.turning = turning_of(first);
   res.info.winding = first;
   res.curve = PlanarCurve{};
-  const std::string scope = o.winding ? "g1: no curve of " + turning_text(turning_of(first)) + " (winding " +
-                                            std::to_string(first) + ")"
+  // (With a winding the turning is info.turning; the message stays cheap to build.)
+  const std::string scope = o.winding ? "g1: no curve of winding " + std::to_string(first)
                                       : "g1: no curve with total turning <= " + format_number(o.max_turning) +
                                             " rad (max_turning)";
   if (!failures.empty()) {

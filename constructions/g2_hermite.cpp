@@ -273,11 +273,22 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   const double phi0 = wrap_angle(pr.start.theta - chord_angle), phi1 = wrap_angle(pr.end.theta - chord_angle);
   const double base = phi1 - phi0;
   const auto turning_of = [&](int k) { return base + 2 * kPi * k; };
+  if (pr.alpha >= 0 && !(pr.start.kappa * pr.end.kappa > 0)) {  // before any search: stays sub-µs
+    res.info.winding = o.winding.value_or(static_cast<int>(std::lround(-base / (2 * kPi))));
+    res.info.turning = turning_of(res.info.winding);
+    res.info.max_turning = o.winding ? 0.0 : o.max_turning;
+    return finish(Status::no_solution,
+                  "no curve of any winding: for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, "
+                  "so kappa0 and kappa1 must be nonzero with equal signs");
+  }
   std::vector<int> windings;
   if (o.winding) {
     windings.push_back(*o.winding);
   } else {
-    for (int k = -101; k <= 101; ++k)
+    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
+    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
+    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
+    for (int k = k_lo; k <= k_hi; ++k)
       if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
     std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
       const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
@@ -288,10 +299,6 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   res.info.turning = turning_of(windings.front());
   res.info.max_turning = o.winding ? 0.0 : o.max_turning;
 
-  if (pr.alpha >= 0 && !(pr.start.kappa * pr.end.kappa > 0))
-    return finish(Status::no_solution,
-                  "no curve of any winding: for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, "
-                  "so kappa0 and kappa1 must be nonzero with equal signs");
   const double sigma = pr.start.kappa < 0 ? -1.0 : 1.0;
 
   detail::G2System p{{pr.alpha, sigma}, phi0, phi1, pr.start.kappa * r, pr.end.kappa * r,
