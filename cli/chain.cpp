@@ -19,6 +19,8 @@ struct ChainArgs {
   bool closed = false;
   std::string solver = "auto";
   QuadratureArgs quadrature{.integrator = "auto"};
+  std::optional<int> winding;
+  std::optional<double> max_turning;
 };
 
 std::string solver_help() {
@@ -45,6 +47,9 @@ Report solve(const ChainArgs& a) {
     if (p.continuity == ChainContinuity::g1) o.g1.solver = a.solver;
     else o.g2.solver = parse_g2_solver(a.solver);
   }
+  o.g1.winding = o.g2.winding = a.winding;
+  if (a.max_turning) o.g1.max_turning = o.g2.max_turning = *a.max_turning;
+  o.g1.accept = o.g2.accept = a.common.accept;
   const bool explicit_integrator = a.quadrature.integrator != "auto";
   if (explicit_integrator) {
     o.g1.integrator = o.g2.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
@@ -63,6 +68,9 @@ Report solve(const ChainArgs& a) {
   Json thetas = Json::array(), kappas = Json::array();
   for (double t : res.info.thetas) thetas.push_back(number(t));
   for (double k : res.info.kappas) kappas.push_back(number(k));
+  Json windings = Json::array(), turnings = Json::array();
+  for (int k : res.info.windings) windings.push_back(k);
+  for (double t : res.info.turnings) turnings.push_back(number(t));
   j["info"] = {{"continuity", a.continuity},
                {"closed", p.closed},
                {"pairs", res.info.pairs.size()},
@@ -73,6 +81,9 @@ Report solve(const ChainArgs& a) {
                                                                   : "given"},
                {"thetas", std::move(thetas)},
                {"kappas", std::move(kappas)},
+               {"windings", std::move(windings)},
+               {"turnings", std::move(turnings)},
+               {"max_turning", a.winding ? Json(nullptr) : Json(o.g1.max_turning)},
                {"constructions", res.summary.constructions},
                {"error_estimate", number(res.summary.error_estimate)}};
   if (res.usable()) add_planar_points(j, res.curve, n, o.g1.integrator);
@@ -90,6 +101,11 @@ void setup(CLI::App& app) {
   sub->add_option("--continuity", a->continuity, "g1 | g2")->check(CLI::IsMember({"g1", "g2"}))->capture_default_str();
   sub->add_flag("--closed", a->closed, "Also join the last point to the first");
   sub->add_option("--solver", a->solver, solver_help())->capture_default_str();
+  sub->add_option("--winding", a->winding,
+                  "Only the turning theta1 - theta0 + 2 pi k of every pair (angles relative to its chord, each in "
+                  "(-pi, pi]), k in [-100, 100]; default: each pair's least turning up to --max-turning");
+  sub->add_option("--max-turning", a->max_turning,
+                  "Largest total turning (rad) of a pair searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_quadrature_options(*sub, a->quadrature, "auto (each construction's default)");
   add_common_options(*sub, a->common, true);
   set_solver(*sub, *a, solve);

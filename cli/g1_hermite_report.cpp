@@ -16,7 +16,11 @@ void add_g1_hermite_options(CLI::App& sub, G1HermiteArgs& a) {
   sub.add_option("--alpha", a.alpha, "Slope alpha of the logarithmic curvature graph: 0 or 0.01 <= |alpha| <= 5 (required)");
   sub.add_option("--solver", a.solver, g1_solver_help())->capture_default_str();
   add_quadrature_options(sub, a.quadrature, "auto (the solver's own Gauss-Legendre kernel; a named method also checks the result)");
-  sub.add_option("--winding", a.winding, "Full turns added to the least turning, [-100, 100]")->capture_default_str();
+  sub.add_option("--winding", a.winding,
+                 "Only the turning theta1 - theta0 + 2 pi k (angles relative to the chord, each in (-pi, pi]), "
+                 "k in [-100, 100]; default: every turning up to --max-turning, least first");
+  sub.add_option("--max-turning", a.max_turning,
+                 "Largest total turning (rad) searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_common_options(sub, a.common, true);
 }
 
@@ -31,6 +35,8 @@ G1HermiteOptions g1_hermite_options(const G1HermiteArgs& a) {
   G1HermiteOptions o;
   o.solver = a.solver;
   o.winding = a.winding;
+  if (a.max_turning) o.max_turning = *a.max_turning;
+  o.accept = a.common.accept;
   if (a.quadrature.integrator != "auto") {
     o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
     o.verify = true;
@@ -56,7 +62,8 @@ Report g1_hermite_report(const G1HermiteProblem& problem, const G1HermiteArgs& a
                {"turning", number(info.turning)},
                {"phi0", number(info.phi0)},
                {"phi1", number(info.phi1)},
-               {"winding", o.winding},
+               {"winding", info.winding},
+               {"max_turning", o.winding ? Json(nullptr) : Json(info.max_turning)},
                {"constructions", g.summary.constructions},
                {"error_estimate", number(g.summary.error_estimate)}};
   if (g.usable()) add_planar_points(j, g.curve, n, o.integrator);

@@ -15,6 +15,8 @@ struct G2Args {
   std::string solver = "newton", start = "fast";
   QuadratureArgs quadrature{.integrator = "gauss-legendre"};
   bool no_fallback = false;
+  std::optional<int> winding;
+  std::optional<double> max_turning;
 };
 
 Report solve(const G2Args& a) {
@@ -27,6 +29,9 @@ Report solve(const G2Args& a) {
   o.start = parse_g2_start(a.start);
   o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   o.grid_fallback = !a.no_fallback;
+  o.winding = a.winding;
+  if (a.max_turning) o.max_turning = *a.max_turning;
+  o.accept = a.common.accept;
   const int n = sample_count(a.common);
   const G2Result res = solve_g2(pr, o);
   Report r{construction_report(res.summary), {pr.start.position, pr.end.position}};
@@ -36,6 +41,9 @@ Report solve(const G2Args& a) {
   j["info"] = {{"start", std::string(to_string(res.info.start_used))},
                {"start_seconds", res.info.start_seconds},
                {"h", res.usable() ? number(res.info.h) : Json(nullptr)},
+               {"winding", res.info.winding},
+               {"turning", number(res.info.turning)},
+               {"max_turning", o.winding ? Json(nullptr) : Json(res.info.max_turning)},
                {"constructions", res.summary.constructions},
                {"error_estimate", number(res.summary.error_estimate)}};
   if (res.usable()) add_planar_points(j, res.curve, n, o.integrator);
@@ -57,6 +65,11 @@ void setup(CLI::App& app) {
   add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--start", a->start, "Initial estimate: fast | bezier-grid")->capture_default_str();
   sub->add_flag("--no-fallback", a->no_fallback, "Do not retry from the Bezier-grid start when the fast start fails");
+  sub->add_option("--winding", a->winding,
+                  "Only the turning theta1 - theta0 + 2 pi k (angles relative to the chord, each in (-pi, pi]), "
+                  "k in [-100, 100]; default: every turning up to --max-turning, least first");
+  sub->add_option("--max-turning", a->max_turning,
+                  "Largest total turning (rad) searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_common_options(*sub, a->common, true);
   set_solver(*sub, *a, solve);
 }

@@ -122,6 +122,7 @@ ChainResult solve_chain(const ChainProblem& p, const ChainOptions& o) {
   }
   std::vector<LaSegment> segments;
   Summary& sum = r.summary;
+  sum.accept = p.continuity == ChainContinuity::g1 ? o.g1.accept : o.g2.accept;
   Status worst = Status::ok;
   std::string worst_message;
   for (size_t k = 0; k < pairs; ++k) {
@@ -131,10 +132,14 @@ ChainResult solve_chain(const ChainProblem& p, const ChainOptions& o) {
     if (p.continuity == ChainContinuity::g1) {
       const G1HermiteResult g = solve_g1_hermite({p.points[k], r.info.thetas[k], p.points[j], r.info.thetas[j], p.alpha}, o.g1);
       pair = g.summary;
+      r.info.windings.push_back(g.info.winding);
+      r.info.turnings.push_back(g.info.turning);
       if (g.usable()) part = g.curve.segments();
     } else {
       const G2Result g = solve_g2({{p.points[k], r.info.thetas[k], r.info.kappas[k]}, {p.points[j], r.info.thetas[j], r.info.kappas[j]}, p.alpha}, o.g2);
       pair = g.summary;
+      r.info.windings.push_back(g.info.winding);
+      r.info.turnings.push_back(g.info.turning);
       if (g.usable()) part = g.curve.segments();
     }
     sum.iterations += pair.iterations;
@@ -146,6 +151,7 @@ ChainResult solve_chain(const ChainProblem& p, const ChainOptions& o) {
     take_max(sum.residuals.angle, pair.residuals.angle);
     take_max(sum.residuals.curvature, pair.residuals.curvature);
     take_max(sum.error_estimate, pair.error_estimate);
+    take_max(sum.error, pair.error);  // each relative to its pair's chord
     if (rank(pair.status) < rank(worst)) {
       worst = pair.status;
       worst_message = "pair " + std::to_string(k) + " (points " + std::to_string(k) + " → " + std::to_string(j) + "): " +

@@ -36,6 +36,9 @@ struct ChainProblem {
   bool closed = false;  ///< one more segment, from the last point back to the first
 };
 
+/// Each pair's turning follows its options: `winding` set, Δ_k = φ1 − φ0 + 2πk only (the same k for
+/// every pair); unset, the least-turning curve of each pair up to `max_turning`. The chain's
+/// accept bound is the pair options' `accept`.
 struct ChainOptions {
   G1HermiteOptions g1;  ///< for each segment of a g1 chain
   G2Options g2;         ///< for each pair of a g2 chain
@@ -48,6 +51,8 @@ struct ChainInfo {
   bool estimated_kappas = false;
   /// How each pair was solved, in order (pair k joins point k and point k+1, cyclically).
   std::vector<Summary> pairs;
+  std::vector<int> windings;      ///< k of each pair solved (of a failed pair: its least-turning k)
+  std::vector<double> turnings;   ///< the turning of each pair (rad)
   int failed_pair = -1;  ///< the first pair without a usable curve, or −1
 };
 
@@ -55,7 +60,8 @@ using ChainResult = Result<PlanarCurve, ChainInfo>;
 
 /// Solves every pair in order and joins the segments into one curve. Status: ok when every pair
 /// is ok; otherwise the least usable pair's status with a message naming the pair (unusable:
-/// no curve is returned). Summary counters add up over the pairs; residuals are the largest.
+/// no curve is returned). Summary counters add up over the pairs; residuals and error (each pair's
+/// relative to its chord) are the largest.
 /// InputError for fewer points than needed, non-finite or repeated consecutive points, thetas or
 /// kappas of the wrong count or not finite, α or options the Hermite solvers refuse.
 ChainResult solve_chain(const ChainProblem& problem, const ChainOptions& options = {});

@@ -604,10 +604,13 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     else if (std::abs(info.turning) >= kPi || nz.phi0 * (nz.phi0 + nz.delta) == 0) info.shape = G1Shape::other;
     else if (info.inflection) info.shape = nz.phi0 * (nz.phi0 + nz.delta) > 0 ? G1Shape::s_shaped : G1Shape::convex_inflection;
     else info.shape = G1Shape::convex;
-    const bool good = position <= o.accept * r && angle <= o.accept;
+    // The achieved error (common/accuracy.hpp): conclude() grades it against accept.
+    sum.error = std::max({position / r, angle, sum.error_estimate.value_or(0.0) / r});
+    sum.accept = o.accept;
+    const bool good = *sum.error <= o.accuracy;
     res.conclude(good ? Status::ok : Status::tolerance_not_met,
                  good ? "" : "g1: residuals position " + format_number(position / r) + " (chord units), angle " +
-                                 format_number(angle) + " above accept");
+                                 format_number(angle) + " above accuracy " + format_number(o.accuracy));
   } catch (const InputError& e) {
     res.conclude(Status::numerical_failure, std::string("g1: the solution has no double-precision segment: ") + e.what());
   }
@@ -668,109 +671,169 @@ void G1HermiteOptions::validate() const {
     for (const G1SolverInfo& s : kSolvers) m.append(" ").append(s.name);
     throw_input_error("g1", "solver", m);
   }
-  if (winding < -100 || winding > 100) throw_input_error("g1", "winding", winding, "[-100, 100]");
+  if (winding && (*winding < -100 || *winding > 100)) throw_input_error("g1", "winding", *winding, "[-100, 100]");
+  if (!(max_turning >= kPi && max_turning <= 200 * kPi))
+    throw_input_error("g1", "max_turning", max_turning, "[pi, 200 pi]");
   if (!(tolerance >= 1e-16 && tolerance <= 1e-3)) throw_input_error("g1", "tolerance", tolerance, "[1e-16, 1e-3]");
-  if (!(accept >= tolerance && accept <= 1)) throw_input_error("g1", "accept", accept, "[tolerance, 1]");
+  if (!(accuracy >= tolerance && accuracy <= 1)) throw_input_error("g1", "accuracy", accuracy, "[tolerance, 1]");
+  validate_accept("g1", accept);
   if (max_iterations < 1 || max_iterations > 10000) throw_input_error("g1", "max_iterations", max_iterations, "[1, 10000]");
   if (max_bracket_steps < 1 || max_bracket_steps > 100000)
     throw_input_error("g1", "max_bracket_steps", max_bracket_steps, "[1, 100000]");
   std::visit([](const auto& m) { m.validate(); }, integrator);
 }
 
-G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOptions& o) {
-  const auto t_begin = std::chrono::steady_clock::now();
-  o.validate();
-  check_problem(pr);
-  G1HermiteResult res;
-  Summary& sum = res.summary;
-  sum.solver = o.solver;
-  sum.integrator = std::string(name_of(o.integrator));
-  const Complex d = pr.p1 - pr.p0;
-  const double chord_angle = std::arg(d);
-  Normalized nz;
-  nz.alpha = pr.alpha;
-  nz.phi0 = wrap(pr.theta0 - chord_angle);
-  const double phi1 = wrap(pr.theta1 - chord_angle);
-  nz.delta = phi1 - nz.phi0 + 2 * kPi * o.winding;
-  res.info.phi0 = nz.phi0;
-  res.info.phi1 = phi1;
-  res.info.turning = nz.delta;
-  res.info.shape = classify_input(nz.phi0, phi1, nz.delta);
-  auto done = [&]() -> G1HermiteResult& {
-    sum.evaluations += nz.evaluations;
-    sum.constructions += nz.constructions;
-    sum.seconds = seconds_since(t_begin);
-    return res;
-  };
-  auto refuse = [&](std::string why) -> G1HermiteResult& {
-    res.conclude(Status::no_solution, "g1: " + std::move(why));
-    return done();
-  };
+namespace {
 
-  // Straight data: the line (κ ≡ 0), for every α.
-  if (nz.phi0 == 0 && phi1 == 0 && o.winding == 0) {
-    Trial t;
-    t.ok = true;
-    t.I = 1.0;
-    finish(res, pr, o, nz, t, 0);
-    return done();
+// ---- one turning Δ_k, and the search over windings (docs/g1_hermite.md, "Windings") ----
+
+// For α ≥ 0 the shapes of one turning are φ(u; x) = φ0 + Δ·G(u; x) with G(·; x) the distribution
+// function of the curvature density |κ(u)| on [0, 1]: κ ∝ (1 + (e^x − 1)u)^(−1/α) (x = log(qb/qa))
+// or e^{bu} (α = 0). Both families have a monotone likelihood ratio in u, so G(u; x) is monotonic
+// in x for every u, and for two shapes |I(x2) − I(x1)| ≤ |Δ| ∫|G(u; x2) − G(u; x1)| du =
+// |Δ| |E(x2) − E(x1)| with E(x) the mean of u under the density. E in closed form:
+double expm1_over(double c, double x) { return c == 0 ? x : std::expm1(c * x) / c; }
+double mean_u_power(double alpha, double x) {  // α > 0; E(−x) = 1 − E(x) (the mirror u ↦ 1 − u)
+  if (x < 0) return 1 - mean_u_power(alpha, -x);
+  const double b = -1 / alpha, p = 1 + b, t = std::expm1(x);
+  if (t <= 0.25) {  // Σ C(b, n) tⁿ/(n + 2) over Σ C(b, n) tⁿ/(n + 1)
+    double c = 1, tn = 1, D = 0, N = 0;
+    for (int n = 0; n < 400; ++n) {
+      const double term = c * tn;
+      D += term / (n + 1);
+      N += term / (n + 2);
+      if (n > -b && std::abs(term) < 1e-18 * std::abs(D)) break;
+      c *= (b - n) / (n + 1);
+      tn *= t;
+    }
+    return N / D;
   }
+  // E = (Φ(p + 1)/Φ(p) − 1)/t with Φ(c) = ∫₀^x e^{cw}dw = expm1(cx)/c; scaled by e^(−(p+1)x) for p > 0.
+  if (p > 0) return p / (p + 1) * std::expm1(-(p + 1) * x) / std::expm1(-p * x) / -std::expm1(-x) - 1 / t;
+  return (expm1_over(p + 1, x) / expm1_over(p, x) - 1) / t;
+}
+double mean_u_exponential(double b) {  // α = 0: 1/(1 − e^(−b)) − 1/b
+  if (b < 0) return 1 - mean_u_exponential(-b);
+  if (b < 1e-2) {
+    const double b2 = b * b;
+    return 0.5 + b / 12 * (1 - b2 / 60 * (1 - b2 / 42));
+  }
+  return -1 / std::expm1(-b) - 1 / b;
+}
+
+// The shapes x → ±∞ (all turning at one end; α > 1: κ = ∞ at one end): ∫e^{iφ} and E.
+struct ShapeLimits {
+  Complex I_lo, I_hi;
+  double E_lo = 0, E_hi = 0;
+};
+ShapeLimits shape_limits(Normalized& nz) {
+  const Complex a = std::polar(1.0, nz.phi0), b = std::polar(1.0, nz.phi0 + nz.delta);
+  if (nz.alpha == 0) return {b, a, 0, 1};  // b → −∞: turning at the start
+  if (nz.alpha <= 1) return {a, b, 1, 0};  // x → −∞: κ = ∞ at the end
+  const double p = 1 - 1 / nz.alpha;
+  const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
+  return {b * std::conj(J), a * J, 1 / (p + 1), p / (p + 1)};
+}
+
+// Every shape of one turning (α ≥ 0) between −∞ and ∞: an interval [x1, x2] holds no solution when
+// dist(I(x1)) + dist(I(x2)) > |Δ|·|E(x2) − E(x1)| (dist: to the ray [0, ∞) of the chord; the end
+// point must travel to the ray and back). Intervals not excluded are split; a sign change of f
+// with Re ∫ > 0 at both ends is returned as a bracket.
+struct Scan {
+  enum Kind { bracket, none, inconclusive } kind = inconclusive;
+  double lo = 0, hi = 0, flo = 0, fhi = 0;
+  std::string why;
+};
+Scan certified_scan(Normalized& nz, const ShapeLimits& lim, int budget, int& used) {
+  struct Point {
+    double x;
+    Complex I;
+    double E;
+  };
+  const double adelta = std::abs(nz.delta), limit = 700;
+  const auto mean = [&](double x) { return nz.alpha == 0 ? mean_u_exponential(x) : mean_u_power(nz.alpha, x); };
+  const auto dist = [](Complex z) { return z.real() >= 0 ? std::abs(z.imag()) : std::abs(z); };
+  const auto eval = [&](double x, Point& out) {
+    const Trial t = nz.evaluate(x);
+    ++used;
+    if (!t.ok) return false;
+    out = {x, t.I, mean(x)};
+    return true;
+  };
+  const auto fail = [](std::string why) { return Scan{Scan::inconclusive, 0, 0, 0, 0, std::move(why)}; };
+  std::vector<Point> nodes{{-HUGE_VAL, lim.I_lo, lim.E_lo}};
+  for (double x : {-512.0, -128.0, -32.0, -8.0, -2.0, 0.0, 2.0, 8.0, 32.0, 128.0, 512.0}) {
+    Point p;
+    if (eval(x, p)) nodes.push_back(p);
+  }
+  nodes.push_back({HUGE_VAL, lim.I_hi, lim.E_hi});
+  std::vector<std::pair<Point, Point>> stack;
+  for (size_t i = nodes.size() - 1; i > 0; --i) stack.emplace_back(nodes[i - 1], nodes[i]);
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    for (const Point& e : {a, b})
+      if (std::isfinite(e.x) && e.I.imag() == 0 && e.I.real() > 0) return {Scan::bracket, e.x, e.x, 0, 0, ""};
+    if (std::isfinite(a.x) && std::isfinite(b.x) && (a.I.imag() > 0) != (b.I.imag() > 0) && a.I.real() > 0 &&
+        b.I.real() > 0)
+      return {Scan::bracket, a.x, b.x, a.I.imag(), b.I.imag(), ""};
+    // The kernel's ∫ is good to ~1e-14; E to ~1e-13 relative.
+    const double reach = adelta * (std::abs(b.E - a.E) * (1 + 1e-9) + 1e-12) + 1e-12;
+    if (dist(a.I) + dist(b.I) > reach) continue;  // no shape in [a, b] ends on the chord
+    if (used >= budget)
+      return fail("the certified scan of the shapes did not settle [" + format_number(a.x) + ", " + format_number(b.x) +
+                  "] within max_bracket_steps = " + std::to_string(budget));
+    double m;
+    if (!std::isfinite(a.x)) m = std::max(-limit, b.x - std::max(1.0, std::abs(b.x)));
+    else if (!std::isfinite(b.x)) m = std::min(limit, a.x + std::max(1.0, std::abs(a.x)));
+    else m = 0.5 * (a.x + b.x);
+    if (m == a.x || m == b.x)
+      return fail("the end point of the shapes near x = " + format_number(m) +
+                  " touches the chord (or needs an end-curvature ratio beyond e^700): not separated");
+    Point pm;
+    if (!eval(m, pm)) return fail("the shape x = " + format_number(m) + " has no double-precision evaluation");
+    stack.push_back({pm, b});
+    stack.push_back({a, pm});
+  }
+  return {Scan::none, 0, 0, 0, 0, ""};
+}
+
+// One turning: a curve, a proof that there is none, or a failure.
+struct Attempt {
+  enum Kind { found, none, failed } kind = failed;
+  std::string why;
+  Trial t;
+  double x = 0;
+};
+
+constexpr const char* kProofTurnsZero =
+    "alpha >= 0: kappa cannot vanish or change sign, so every curve of this slope turns (turning 0 excluded)";
+constexpr const char* kProofConvexArc =
+    "alpha >= 0: the data need an inflection at turnings of at most pi (tangents on the same side of the chord, or one "
+    "along it) and kappa cannot change sign: a convex curve turning at most pi has its chord strictly between its end "
+    "tangents";
+constexpr const char* kProofLimits =
+    "alpha > 1: the chord direction is outside the range of end-point directions of the curves of this slope and "
+    "turning (at most pi; the end direction is monotonic in the shape and its limits, the curves with infinite "
+    "curvature at one end, lie on one side of the chord)";
+constexpr const char* kProofScan =
+    "alpha >= 0: a certified scan of every shape finds none ending on the chord (between two shapes the end point "
+    "moves by at most |turning| times the shift of the mean position of the curvature, docs/g1_hermite.md)";
+
+Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, Normalized& nz, Summary& sum) {
+  Attempt out;
+  const auto none = [&](std::string why) {
+    out.kind = Attempt::none;
+    out.why = std::move(why);
+    return out;
+  };
   // α ≥ 0: κ keeps its sign, so φ is strictly monotonic and the turning is not 0.
   if (pr.alpha >= 0) {
-    if (nz.delta == 0)
-      return refuse("alpha >= 0: the turning theta1 - theta0 is 0 (with this winding) but kappa cannot vanish or "
-                    "change sign, so every curve of this slope turns");
+    if (nz.delta == 0) return none(kProofTurnsZero);
     // A convex arc turning |Δ| ≤ π has its chord strictly between its end tangents.
-    if (std::abs(nz.delta) <= kPi && !(nz.delta > 0 ? (nz.phi0 < 0 && phi1 + 2 * kPi * o.winding > 0)
-                                                     : (nz.phi0 > 0 && phi1 + 2 * kPi * o.winding < 0)))
-      return refuse("alpha >= 0: the data need an inflection (tangents on the same side of the chord, or one along "
-                    "it) and kappa cannot change sign: a convex curve turning at most pi has its chord strictly "
-                    "between its end tangents");
-  }
-
-  // The paper methods.
-  if (o.solver == "triangle" || o.solver == "s-curve") {
-    const bool convex = res.info.shape == G1Shape::convex && o.winding == 0;
-    const bool s = res.info.shape == G1Shape::s_shaped && o.winding == 0 && pr.alpha < 0;
-    if (o.solver == "triangle" && !convex)
-      throw_input_error("g1", "solver", "'triangle' (001) handles tangents on opposite sides of the chord with "
-                                        "|turning| < pi and winding 0 only; use 'auto'");
-    if (o.solver == "s-curve" && !s)
-      throw_input_error("g1", "solver", "'s-curve' (004) handles alpha < 0 with both tangents on the same side of the "
-                                        "chord and winding 0 only; use 'auto'");
-    const Complex t0 = std::polar(1.0, pr.theta0), t1 = std::polar(1.0, pr.theta1);
-    PlanarCurve curve;
-    Summary paper;
-    if (o.solver == "triangle") {
-      // Tangent intersection a1 = p0 + μ t0 = p1 − ν t1 (μ, ν > 0 for convex data).
-      const double cross = (std::conj(t0) * t1).imag();
-      const double mu = (std::conj(d) * t1).imag() / cross;
-      TriangleOptions to;
-      to.integrator = o.integrator;
-      TriangleResult tr = solve_g1({pr.p0, pr.p0 + mu * t0, pr.p1}, pr.alpha, to);
-      curve = tr.curve;
-      paper = tr.summary;
-    } else {
-      const double r = std::abs(d) / 3;
-      SCurveOptions so;
-      so.integrator = o.integrator;
-      SCurveResult sr = solve_s_curve({pr.p0, pr.p0 + r * t0, pr.p1 - r * t1, pr.p1}, pr.alpha, so);
-      curve = sr.curve;
-      paper = sr.summary;
-    }
-    const std::string solver = sum.solver, integrator = sum.integrator;
-    sum = paper;
-    sum.solver = solver;
-    sum.integrator = integrator;
-    if (paper.usable()) {
-      res.curve = curve;
-      res.info.length = curve.length();
-      res.info.turning = curve.theta_at(curve.length()) - curve.theta_at(0);
-      for (const LaSegment& seg : curve.segments())
-        if (auto s_in = seg.inflection_s()) res.info.inflection = *s_in;
-    }
-    sum.seconds = seconds_since(t_begin);
-    return res;
+    const double phi1k = nz.phi0 + nz.delta;
+    if (std::abs(nz.delta) <= kPi && !(nz.delta > 0 ? (nz.phi0 < 0 && phi1k > 0) : (nz.phi0 > 0 && phi1k < 0)))
+      return none(kProofConvexArc);
   }
 
   // The reduced equation f(x) = 0: domain and guess.
@@ -806,10 +869,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       const double f_end = (std::polar(1.0, nz.phi0 + nz.delta) * std::conj(J)).imag();
       f_at_xmax = f_start;
       f_at_xmin = f_end;
-      if ((f_start > 1e-12 && f_end > 1e-12) || (f_start < -1e-12 && f_end < -1e-12))
-        return refuse("alpha > 1: the chord direction is outside the range of end-point directions of the curves of "
-                      "this slope and turning (its limits, the curves with infinite curvature at one end, lie on one "
-                      "side of the chord: f = " + format_number(f_start) + ", " + format_number(f_end) + ")");
+      if ((f_start > 1e-12 && f_end > 1e-12) || (f_start < -1e-12 && f_end < -1e-12)) return none(kProofLimits);
     }
   } else {
     x0 = power_guess(pr.alpha, nz.phi0, nz.delta);
@@ -818,7 +878,9 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   Trial best;
   double xbest = x0;
   bool converged = false;
-  if (o.solver == "auto") {
+  // α ≥ 0 beyond half a turn: the certified scan straight away (it brackets every root it meets).
+  const bool scan_first = pr.alpha >= 0 && std::abs(nz.delta) > kPi;
+  if (o.solver == "auto" && !scan_first) {
     // Newton, each step limited to 2π in x and kept inside the domain; once two iterates have
     // opposite signs of f the step is kept inside their bracket (bisection otherwise).
     // α ≥ 0: f increases with x when Δ > 0 (x → ∞ puts the turning at the start, so the chord
@@ -873,12 +935,27 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       x = next;
     }
   }
+  std::string failure;
   if (!converged) {
-    // A sign bracket around the guess, then the chosen root method (auto: TOMS 748).
+    // A sign bracket (α ≥ 0: from the certified scan, which may also prove that there is none;
+    // α < 0: around the guess), then the chosen root method (auto: TOMS 748).
     int used = 0;
-    const Found b = find_bracket(nz, x0, xmin, xmax, step, o.max_bracket_steps, used);
-    sum.iterations += used;
-    if (b.ok) {
+    Found b;
+    if (pr.alpha >= 0) {
+      const Scan s = certified_scan(nz, shape_limits(nz), o.max_bracket_steps, used);
+      sum.iterations += used;
+      if (s.kind == Scan::none) return none(kProofScan);
+      if (s.kind == Scan::bracket) b = {true, s.lo, s.hi, s.flo, s.fhi};
+      else failure = s.why;
+    } else {
+      b = find_bracket(nz, x0, xmin, xmax, step, o.max_bracket_steps, used);
+      sum.iterations += used;
+      if (!b.ok) failure = "no sign change of the reduced equation within max_bracket_steps of the guess";
+    }
+    if (b.ok && b.lo == b.hi) {  // the scan met a root exactly
+      const Trial t = nz.evaluate(b.lo);
+      if (t.ok) best = t, xbest = b.lo, converged = std::abs(t.f) <= o.tolerance && t.I.real() > 0;
+    } else if (b.ok) {
       const RootMethod m = o.solver == "auto" ? RootMethod::toms748 : parse_root_method(o.solver);
       RootOptions ro;
       ro.x_rtol = 1e-15;
@@ -896,25 +973,214 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
         if (t.ok) {
           best = t;
           xbest = rr.root;
-          converged = std::abs(t.f) <= std::max(o.tolerance, 1e-3 * o.accept) && t.I.real() > 0;
+          converged = std::abs(t.f) <= std::max(o.tolerance, 1e-3 * o.accuracy) && t.I.real() > 0;
         }
       }
-    } else if (pr.alpha > 1 && std::abs(nz.delta) <= kPi) {
-      // See docs/g1_hermite.md: β(a) is monotonic and its limits are the directions of the two
-      // curves with κ = ∞ at one end; the bracket search reached both without a sign change.
+      if (!converged) failure = "the root method did not converge in the sign bracket";
     }
   }
-  if (!converged) {
-    if (best.ok && std::abs(best.f) <= o.accept && best.I.real() > 0) {
-      finish(res, pr, o, nz, best, xbest);
-      return done();
-    }
-    res.conclude(Status::not_converged,
-                 "g1: no root of the reduced equation found (best |f| = " + format_number(best.ok ? std::abs(best.f) : kNaN) +
-                     "); for alpha >= 0 the root may need an end-curvature ratio beyond e^700");
+  // The end point is off by L|f| = |f|/Re∫ chords: where Re∫ is small (long loops) and that exceeds
+  // a tenth of `accuracy`, a few Newton steps more.
+  for (int it = 0; it < 4 && best.ok && best.I.real() > 0 && std::abs(best.f) > 0.1 * o.accuracy * best.I.real();
+       ++it) {
+    const double x = xbest - best.f / best.df;
+    if (!std::isfinite(x)) break;
+    const Trial t = nz.evaluate(x);
+    ++sum.iterations;
+    if (!t.ok || !(std::abs(t.f) < std::abs(best.f)) || !(t.I.real() > 0)) break;
+    best = t;
+    xbest = x;
+  }
+  // Not converged but within accept: finish() grades it (tolerance_not_met).
+  if (converged || (best.ok && std::abs(best.f) <= o.accept && best.I.real() > 0)) {
+    out.kind = Attempt::found;
+    out.t = best;
+    out.x = xbest;
+    return out;
+  }
+  out.why = "no root of the reduced equation found (best |f| = " + format_number(best.ok ? std::abs(best.f) : kNaN) +
+            (failure.empty() ? "" : "; " + failure) + ")";
+  if (pr.alpha >= 0 && failure.empty()) out.why += "; for alpha >= 0 the root may need an end-curvature ratio beyond e^700";
+  return out;
+}
+
+std::string turning_text(double delta) { return "turning " + format_number(delta) + " rad"; }
+
+}  // namespace
+
+G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOptions& o) {
+  const auto t_begin = std::chrono::steady_clock::now();
+  o.validate();
+  check_problem(pr);
+  G1HermiteResult res;
+  Summary& sum = res.summary;
+  sum.solver = o.solver;
+  sum.integrator = std::string(name_of(o.integrator));
+  sum.accept = o.accept;
+  const Complex d = pr.p1 - pr.p0;
+  const double chord_angle = std::arg(d);
+  const double phi0 = wrap(pr.theta0 - chord_angle);
+  const double phi1 = wrap(pr.theta1 - chord_angle);
+  const double base = phi1 - phi0;  // Δ_0; Δ_k = base + 2πk
+  const auto turning_of = [&](int k) { return base + 2 * kPi * k; };
+
+  // The windings to try: the given one, or every |Δ_k| ≤ max_turning, least first (on a tie the
+  // lesser |k|, then the left turn).
+  // At most 205 windings (|Δ| ≤ 200π): a fixed buffer, no allocation on the fast path.
+  struct Windings {
+    std::array<int, 208> k{};
+    size_t n = 0;
+    void push_back(int v) { k[n++] = v; }
+    int front() const { return k[0]; }
+    int* begin() { return k.data(); }
+    int* end() { return k.data() + n; }
+  } windings;
+  if (o.winding) {
+    windings.push_back(*o.winding);
+  } else {
+    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
+    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
+    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
+    for (int k = k_lo; k <= k_hi; ++k)
+      if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
+    std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
+      const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
+      return ta != tb ? ta < tb : std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : turning_of(a) > turning_of(b);
+    });
+  }
+  const int first = windings.front();
+  res.info.phi0 = phi0;
+  res.info.phi1 = phi1;
+  res.info.winding = first;
+  res.info.turning = turning_of(first);
+  res.info.max_turning = o.winding ? 0.0 : o.max_turning;
+  res.info.shape = classify_input(phi0, phi1, turning_of(first));
+  Normalized nz;
+  nz.alpha = pr.alpha;
+  nz.phi0 = phi0;
+  nz.delta = turning_of(first);
+  auto done = [&]() -> G1HermiteResult& {
+    sum.evaluations += nz.evaluations;
+    sum.constructions += nz.constructions;
+    sum.seconds = seconds_since(t_begin);
+    return res;
+  };
+
+  // Straight data: the line (κ ≡ 0), for every α.
+  if (phi0 == 0 && phi1 == 0 && first == 0) {
+    Trial t;
+    t.ok = true;
+    t.I = 1.0;
+    finish(res, pr, o, nz, t, 0);
     return done();
   }
-  finish(res, pr, o, nz, best, xbest);
+
+  // The paper methods (turnings of at most π: the given winding, else winding 0).
+  if (o.solver == "triangle" || o.solver == "s-curve") {
+    const int k = o.winding.value_or(0);
+    nz.delta = turning_of(k);
+    res.info.winding = k;
+    res.info.turning = nz.delta;
+    res.info.shape = classify_input(phi0, phi1, nz.delta);
+    const bool convex = res.info.shape == G1Shape::convex && k == 0;
+    const bool s = res.info.shape == G1Shape::s_shaped && k == 0 && pr.alpha < 0;
+    if (o.solver == "triangle" && !convex)
+      throw_input_error("g1", "solver", "'triangle' (001) handles tangents on opposite sides of the chord with "
+                                        "|turning| < pi and winding 0 only; use 'auto'");
+    if (o.solver == "s-curve" && !s)
+      throw_input_error("g1", "solver", "'s-curve' (004) handles alpha < 0 with both tangents on the same side of the "
+                                        "chord and winding 0 only; use 'auto'");
+    const Complex t0 = std::polar(1.0, pr.theta0), t1 = std::polar(1.0, pr.theta1);
+    PlanarCurve curve;
+    Summary paper;
+    if (o.solver == "triangle") {
+      // Tangent intersection a1 = p0 + μ t0 = p1 − ν t1 (μ, ν > 0 for convex data).
+      const double cross = (std::conj(t0) * t1).imag();
+      const double mu = (std::conj(d) * t1).imag() / cross;
+      TriangleOptions to;
+      to.integrator = o.integrator;
+      TriangleResult tr = solve_g1({pr.p0, pr.p0 + mu * t0, pr.p1}, pr.alpha, to);
+      curve = tr.curve;
+      paper = tr.summary;
+    } else {
+      const double r = std::abs(d) / 3;
+      SCurveOptions so;
+      so.integrator = o.integrator;
+      SCurveResult sr = solve_s_curve({pr.p0, pr.p0 + r * t0, pr.p1 - r * t1, pr.p1}, pr.alpha, so);
+      curve = sr.curve;
+      paper = sr.summary;
+    }
+    const std::string solver = sum.solver, integrator = sum.integrator;
+    sum = paper;
+    sum.solver = solver;
+    sum.integrator = integrator;
+    if (paper.usable()) {
+      res.curve = curve;
+      res.info.length = curve.length();
+      res.info.turning = curve.theta_at(curve.length()) - curve.theta_at(0);
+      for (const LaSegment& seg : curve.segments())
+        if (auto s_in = seg.inflection_s()) res.info.inflection = *s_in;
+    }
+    sum.seconds = seconds_since(t_begin);
+    return res;
+  }
+
+  // Each turning in order: the first curve found is returned.
+  std::vector<std::pair<double, std::string>> proofs, failures;  // (turning, why)
+  for (int k : windings) {
+    nz.delta = turning_of(k);
+    const Attempt a = attempt_turning(pr, o, nz, sum);
+    if (a.kind == Attempt::none) {
+      proofs.emplace_back(nz.delta, a.why);
+      continue;
+    }
+    if (a.kind == Attempt::found) {
+      finish(res, pr, o, nz, a.t, a.x);
+      if (res.usable()) {
+        res.info.winding = k;
+        if (!failures.empty() && sum.message.empty())
+          sum.message = "g1: not proven the least-turning curve: " + turning_text(failures.front().first) +
+                        " unresolved (" + failures.front().second + ")";
+        return done();
+      }
+      failures.emplace_back(nz.delta, sum.message);
+      res.info.turning = turning_of(first);
+      continue;
+    }
+    failures.emplace_back(nz.delta, a.why);
+  }
+  res.info.turning = turning_of(first);
+  res.info.winding = first;
+  res.curve = PlanarCurve{};
+  // (With a winding the turning is info.turning; the message stays cheap to build.)
+  const std::string scope = o.winding ? "g1: no curve of winding " + std::to_string(first)
+                                      : "g1: no curve with total turning <= " + format_number(o.max_turning) +
+                                            " rad (max_turning)";
+  if (!failures.empty()) {
+    std::string m = scope + " found, but the search is not complete: " + turning_text(failures.front().first) + ": " +
+                    failures.front().second;
+    if (failures.size() > 1) m += " (and " + std::to_string(failures.size() - 1) + " more turnings unresolved)";
+    res.conclude(Status::not_converged, m);
+    return done();
+  }
+  // Every turning excluded by a proof: group the turnings by argument.
+  if (o.winding) {
+    res.conclude(Status::no_solution, scope + ": " + proofs.front().second);
+    return done();
+  }
+  std::string m = scope + ":";
+  std::vector<bool> used(proofs.size(), false);
+  for (size_t i = 0; i < proofs.size(); ++i) {
+    if (used[i]) continue;
+    std::string list;
+    for (size_t j = i; j < proofs.size(); ++j)
+      if (!used[j] && proofs[j].second == proofs[i].second) {
+        list += (list.empty() ? "" : ", ") + format_number(proofs[j].first);
+        used[j] = true;
+      }
+    m += (i == 0 ? " " : "; ") + std::string("turning ") + list + ": " + proofs[i].second;
+  }
+  res.conclude(Status::no_solution, m);
   return done();
 }
 

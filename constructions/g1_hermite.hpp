@@ -17,12 +17,21 @@
 // integrand), split and graded at the inflection (the zero of q, closed form), geometric panels
 // toward an end where κ is steep; Newton from a small-angle guess, safeguarded by a sign bracket.
 // Of the curves with turning Δ the one returned is the root of f reached from that guess (no
-// internal loop on ordinary data); another winding is asked for with `winding`.
+// internal loop on ordinary data).
+//
+// Windings. Without `winding` the turnings Δ_k = φ1 − φ0 + 2πk are tried in order of increasing
+// |Δ_k| up to `max_turning`, and the first that has a curve is returned (the least-turning curve).
+// Each turning is either solved, or excluded by a proof (α ≥ 0: the sign of κ, the convex-arc
+// argument for |Δ| ≤ π, the α > 1 limits, or for any Δ a certified scan of every shape x, which
+// bounds how far the end point moves between two shapes), or left unresolved (a solver failure).
+// no_solution therefore says "no curve with total turning <= T" with the arguments named;
+// a search with an unresolved turning and no curve ends not_converged. `winding = k` asks for Δ_k only.
 //
 //   lac::G1HermiteOptions o;  o.winding = 1;                       // one more left turn
 //   auto r = lac::solve_g1_hermite({{0, 0}, 0.3, {1, 0}, -0.4, -1.0}, o);
 //   if (r.usable()) { r.curve.length(); r.info.shape; r.info.inflection; r.curve.sample(100); }
 #include <complex>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <string>
@@ -71,11 +80,19 @@ struct G1HermiteOptions {
   /// runs on the built-in Gauss–Legendre kernel, which differentiates f.
   AnyQuadrature integrator = GaussLegendre{};
   bool verify = false;
-  int winding = 0;            ///< turning target Δ + 2πk, k ∈ [−100, 100]
+  /// Only the turning Δ_k = φ1 − φ0 + 2πk (φ0, φ1 relative to the chord, each in (−π, π]),
+  /// k ∈ [−100, 100]. Unset: every k with |Δ_k| ≤ max_turning, least |Δ_k| first.
+  std::optional<int> winding;
+  /// Largest total turning |Δ| (rad) searched without `winding`, [π, 200π]; the default covers at
+  /// least 3π beyond the least turning (which is at most π).
+  double max_turning = 4 * std::numbers::pi;
   double tolerance = 1e-13;   ///< on |f| (end point off the chord, chord units), [1e-16, 1e-3]
   int max_iterations = 60;    ///< Newton / root-finder steps, [1, 10000]
-  int max_bracket_steps = 400;  ///< trial points of the bracket search, [1, 100000]
-  double accept = 1e-10;      ///< largest residual (chord units, rad) for status ok, [tolerance, 1]
+  /// Trial points of the bracket search (α < 0) or of the certified scan of one turning (α ≥ 0),
+  /// [1, 100000].
+  int max_bracket_steps = 400;
+  double accuracy = 1e-10;    ///< target: largest residual (chord units, rad) for status ok, [tolerance, 1]
+  double accept = kDefaultAccept;  ///< usable bound on the achieved error (relative), (0, 0.1]
   void validate() const;      ///< InputError naming the option
 };
 
@@ -87,6 +104,9 @@ struct G1HermiteInfo {
   double qa = 0, qb = 0;             ///< the segment's q at u = 0 and u = 1 (u = s/L)
   double length = 0;                 ///< L (user units)
   double x = 0;                      ///< the shape variable at the solution (a or b, above)
+  int winding = 0;                   ///< k of the returned curve (of a refusal: the least-turning k)
+  /// Without `winding`: T, every turning |Δ| ≤ T was searched (0 with an explicit winding).
+  double max_turning = 0;
 };
 
 using G1HermiteResult = Result<PlanarCurve, G1HermiteInfo>;
@@ -94,8 +114,9 @@ using G1HermiteResult = Result<PlanarCurve, G1HermiteInfo>;
 /// The curve: one LaSegment on u ∈ [0, 1] placed at p0 with scale L and the chord's direction (a
 /// straight line for α ≥ 0 is a segment of α = −1 with κ ≡ 0: the common limit of every α).
 /// Summary: iterations, evaluations (integrand calls), constructions (trial shapes), residuals
-/// position (user units) and angle. Throws InputError for non-finite data, coincident points, α
-/// outside its range, bad options; no_solution only with a proof in the message.
+/// position (user units) and angle; error (position / chord, angle, error estimate / chord) and
+/// accept. Throws InputError for non-finite data, coincident points, α outside its range, bad
+/// options; no_solution only with a proof in the message, which states its scope.
 G1HermiteResult solve_g1_hermite(const G1HermiteProblem& problem, const G1HermiteOptions& options = {});
 
 }  // namespace lac

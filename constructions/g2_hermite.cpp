@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -118,7 +119,11 @@ G2Start parse_g2_start(std::string_view name) {
 
 void G2Options::validate() const {
   if (!(tolerance >= 1e-16 && tolerance <= 1e-3)) throw_input_error("g2", "tolerance", tolerance, "[1e-16, 1e-3]");
-  if (!(accept >= tolerance && accept <= 1)) throw_input_error("g2", "accept", accept, "[tolerance, 1]");
+  if (!(accuracy >= tolerance && accuracy <= 1)) throw_input_error("g2", "accuracy", accuracy, "[tolerance, 1]");
+  validate_accept("g2", accept);
+  if (winding && (*winding < -100 || *winding > 100)) throw_input_error("g2", "winding", *winding, "[-100, 100]");
+  if (!(max_turning >= std::numbers::pi && max_turning <= 200 * std::numbers::pi))
+    throw_input_error("g2", "max_turning", max_turning, "[pi, 200 pi]");
   if (max_iterations < 1 || max_iterations > 100000)
     throw_input_error("g2", "max_iterations", max_iterations, "[1, 100000]");
   if (max_inner_iterations < 1 || max_inner_iterations > 100000)
@@ -129,37 +134,15 @@ void G2Options::validate() const {
   std::visit([](const auto& m) { m.validate(); }, integrator);
 }
 
-G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
-  const auto t_begin = std::chrono::steady_clock::now();
-  o.validate();
-  check_problem(pr);
-  const std::complex<double> d = pr.end.position - pr.start.position;
-  const double r = std::abs(d), chord_angle = std::arg(d);
+namespace {
 
-  G2Result res;
+// One turning: the system p (its phi_e = φ0 + Δ_k) solved and the curve built and checked into res
+// (status set; counters added to res.summary). `spent`: integrand evaluations of earlier turnings.
+void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detail::G2System& p, double chord_angle) {
   Summary& sum = res.summary;
-  sum.integrator = std::string(name_of(o.integrator));
-  sum.solver = std::string(to_string(o.solver));
-  auto finish = [&](Status status, std::string message) {
-    res.conclude(status, std::move(message));
-    sum.seconds = seconds_since(t_begin);
-    return res;
-  };
-
-  detail::G2System p{{pr.alpha, pr.start.kappa < 0 ? -1.0 : 1.0},
-                     wrap_angle(pr.start.theta - chord_angle),
-                     wrap_angle(pr.end.theta - chord_angle),
-                     pr.start.kappa * r,
-                     pr.end.kappa * r,
-                     detail::TrialIntegrator(o.integrator)};
-  if (pr.alpha >= 0 && !(pr.start.kappa * pr.end.kappa > 0))
-    return finish(Status::no_solution,
-                  "for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, so kappa0 and kappa1 "
-                  "must be nonzero with equal signs");
-  if (pr.alpha >= 0 && !(p.law.sigma * (p.phi_e - p.phi_s) > 0))
-    return finish(Status::no_solution,
-                  "for alpha >= 0 the curvature keeps the sign of kappa0, so the turning theta1 - theta0 (measured "
-                  "from the chord, in (-pi, pi]) must have that sign too");
+  const std::complex<double> d = pr.end.position - pr.start.position;
+  const double r = std::abs(d);
+  auto finish = [&](Status status, std::string message) { res.conclude(status, std::move(message)); };
 
   auto run = [&](G2Start start) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -167,7 +150,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     res.info.start_seconds += seconds_since(t0);
     sum.evaluations += e.evaluations;
     // The run's trial curves fail once the call's budget is spent (the run counts from 0).
-    p.integrate.set_limit(o.max_evaluations - sum.evaluations);
+    p.integrate.set_limit(std::max(0L, o.max_evaluations - sum.evaluations));
     detail::G2SolverOutcome so = o.solver == G2Solver::paper
                                      ? detail::solve_g2_paper(p, e, o)
                                      : detail::solve_g2_nonlinear(static_cast<NonlinearMethod>(o.solver), p, e, o);
@@ -184,7 +167,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   };
   detail::G2SolverOutcome so = run(o.start);
   bool fell_back = false;
-  if (so.status != Status::ok && o.start == G2Start::fast && o.grid_fallback) {
+  if (so.status != Status::ok && o.start == G2Start::fast && o.grid_fallback && sum.evaluations < o.max_evaluations) {
     detail::G2SolverOutcome retry = run(G2Start::bezier_grid);
     if (retry.status == Status::ok) so = retry, fell_back = true;
   }
@@ -253,11 +236,143 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     return finish(Status::numerical_failure, "the residual check of the end conditions is not a finite number");
   sum.residuals = {residual_position, residual_angle, residual_curvature};
   const double worst = std::max({residual_position / r, residual_angle, residual_curvature * r});
-  if (!(worst <= o.accept))
+  // The achieved error (common/accuracy.hpp): conclude() grades it against accept.
+  sum.error = std::max(worst, sum.error_estimate.value_or(0.0) / r);
+  if (!(*sum.error <= o.accuracy))
     return finish(Status::tolerance_not_met, std::string(o.verify ? "verified" : "unverified") + " residual " +
-                                                 format_number(worst) + " above accept " + format_number(o.accept));
+                                                 format_number(*sum.error) + " above accuracy " +
+                                                 format_number(o.accuracy));
   if (fell_back) return finish(Status::fell_back, "fast start failed; solved from the Bezier-grid start");
   return finish(Status::ok, "");
+}
+
+std::string turning_text(double delta) { return "turning " + format_number(delta) + " rad"; }
+
+}  // namespace
+
+G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
+  const auto t_begin = std::chrono::steady_clock::now();
+  o.validate();
+  check_problem(pr);
+  const std::complex<double> d = pr.end.position - pr.start.position;
+  const double r = std::abs(d), chord_angle = std::arg(d);
+  constexpr double kPi = std::numbers::pi;
+
+  G2Result res;
+  Summary& sum = res.summary;
+  sum.integrator = std::string(name_of(o.integrator));
+  sum.solver = std::string(to_string(o.solver));
+  sum.accept = o.accept;
+  auto finish = [&](Status status, std::string message) {
+    res.conclude(status, std::move(message));
+    sum.seconds = seconds_since(t_begin);
+    return res;
+  };
+
+  // The turning target: Δ_k = φ1 − φ0 + 2πk with φ0, φ1 relative to the chord in (−π, π].
+  const double phi0 = wrap_angle(pr.start.theta - chord_angle), phi1 = wrap_angle(pr.end.theta - chord_angle);
+  const double base = phi1 - phi0;
+  const auto turning_of = [&](int k) { return base + 2 * kPi * k; };
+  if (pr.alpha >= 0 && !(pr.start.kappa * pr.end.kappa > 0)) {  // before any search: stays sub-µs
+    res.info.winding = o.winding.value_or(static_cast<int>(std::lround(-base / (2 * kPi))));
+    res.info.turning = turning_of(res.info.winding);
+    res.info.max_turning = o.winding ? 0.0 : o.max_turning;
+    return finish(Status::no_solution,
+                  "no curve of any winding: for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, "
+                  "so kappa0 and kappa1 must be nonzero with equal signs");
+  }
+  std::vector<int> windings;
+  if (o.winding) {
+    windings.push_back(*o.winding);
+  } else {
+    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
+    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
+    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
+    for (int k = k_lo; k <= k_hi; ++k)
+      if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
+    std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
+      const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
+      return ta != tb ? ta < tb : std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : turning_of(a) > turning_of(b);
+    });
+  }
+  res.info.winding = windings.front();
+  res.info.turning = turning_of(windings.front());
+  res.info.max_turning = o.winding ? 0.0 : o.max_turning;
+
+  const double sigma = pr.start.kappa < 0 ? -1.0 : 1.0;
+
+  detail::G2System p{{pr.alpha, sigma}, phi0, phi1, pr.start.kappa * r, pr.end.kappa * r,
+                     detail::TrialIntegrator(o.integrator)};
+  std::vector<std::pair<double, std::string>> proofs, failures;  // (turning, why)
+  Status failed_status = Status::not_converged;
+  for (int k : windings) {
+    const double delta = turning_of(k);
+    if (pr.alpha >= 0 && !(sigma * delta > 0)) {
+      proofs.emplace_back(delta, "for alpha >= 0 the curvature keeps the sign of kappa0, and the turning must have "
+                                 "that sign too");
+      continue;
+    }
+    if (pr.alpha >= 0 && std::abs(delta) <= kPi && !(delta > 0 ? (phi0 < 0 && phi0 + delta > 0) : (phi0 > 0 && phi0 + delta < 0))) {
+      proofs.emplace_back(delta, "for alpha >= 0 the data need an inflection at turnings of at most pi (tangents on the "
+                                 "same side of the chord, or one along it): a convex curve turning at most pi has its "
+                                 "chord strictly between its end tangents");
+      continue;
+    }
+    p.phi_e = phi0 + delta;
+    G2Result attempt;
+    attempt.summary = sum;  // counters (and the call's evaluation budget) carry over
+    attempt.info.start_seconds = res.info.start_seconds;
+    solve_turning(attempt, pr, o, p, chord_angle);
+    attempt.info.winding = k;
+    attempt.info.turning = delta;
+    attempt.info.max_turning = res.info.max_turning;
+    if (attempt.usable()) {
+      res = std::move(attempt);
+      if (!failures.empty() && sum.status == Status::ok && sum.message.empty())
+        sum.message = "not proven the least-turning curve: " + turning_text(failures.front().first) + " unresolved (" +
+                      failures.front().second + ")";
+      sum.seconds = seconds_since(t_begin);
+      return res;
+    }
+    if (o.winding) {  // the one turning asked for: its own status
+      res = std::move(attempt);
+      sum.seconds = seconds_since(t_begin);
+      return res;
+    }
+    sum.iterations = attempt.summary.iterations;
+    sum.evaluations = attempt.summary.evaluations;
+    sum.constructions = attempt.summary.constructions;
+    res.info.start_seconds = attempt.info.start_seconds;
+    failures.emplace_back(delta, std::string(to_string(attempt.summary.status)) + ": " + attempt.summary.message);
+    if (attempt.summary.status == Status::max_iterations && sum.evaluations >= o.max_evaluations) {
+      failed_status = Status::max_iterations;  // the call's budget is spent: no further turning can be tried
+      break;
+    }
+  }
+  const std::string scope = o.winding ? "no curve of " + turning_text(turning_of(windings.front())) + " (winding " +
+                                            std::to_string(windings.front()) + ")"
+                                      : "no curve with total turning <= " + format_number(o.max_turning) +
+                                            " rad (max_turning)";
+  if (!failures.empty()) {
+    std::string m = scope + " found, but the search is not complete: " + turning_text(failures.front().first) + ": " +
+                    failures.front().second;
+    if (failures.size() > 1) m += " (and " + std::to_string(failures.size() - 1) + " more turnings unresolved)";
+    return finish(failed_status, m);
+  }
+  if (o.winding) return finish(Status::no_solution, scope + ": " + proofs.front().second);
+  std::string m = scope + ":";
+  std::vector<bool> used(proofs.size(), false);
+  for (size_t i = 0; i < proofs.size(); ++i) {
+    if (used[i]) continue;
+    std::string list;
+    for (size_t j = i; j < proofs.size(); ++j)
+      if (!used[j] && proofs[j].second == proofs[i].second) {
+        list += (list.empty() ? "" : ", ") + format_number(proofs[j].first);
+        used[j] = true;
+      }
+    m += (i == 0 ? " " : "; ") + std::string("turning ") + list + ": " + proofs[i].second;
+  }
+  return finish(Status::no_solution, m);
 }
 
 }  // namespace lac

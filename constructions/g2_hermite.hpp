@@ -18,9 +18,17 @@
 // integrators/registry.hpp; default gauss-legendre); the result is verified independently by
 // tanh-sinh.
 //
-// Supported α ∈ [−5, 5]. For α ≥ 0 the curvature of an LA segment cannot vanish or change sign,
-// so end curvatures of opposite sign or zero, or a turning of the other sign, have no curve:
-// status no_solution. Bad input throws InputError.
+// Windings. The turning target is Δ_k = φ1 − φ0 + 2πk, φ0, φ1 the end tangents relative to the
+// chord, each in (−π, π] (θ1 is never wrapped silently: every k is a different curve). With
+// G2Options::winding only Δ_k; without it every Δ_k with |Δ_k| ≤ max_turning in order of
+// increasing |Δ_k| (on a tie the lesser |k|, then the left turn), and the first that solves is returned. A turning is
+// excluded by proof where α ≥ 0: κ keeps the sign of κ0 (turnings of the other sign or 0), and a
+// convex arc turning at most π has its chord strictly between its end tangents. no_solution only
+// when every turning up to max_turning is so excluded ("no curve with total turning <= T"), or for
+// every winding when α ≥ 0 and κ0, κ1 are zero or of opposite signs; a turning the solver fails
+// on leaves the search incomplete: not_converged.
+//
+// Supported α ∈ [−5, 5]. Bad input throws InputError.
 //
 //   lac::G2Options o;
 //   o.solver = lac::parse_g2_solver("ceres");
@@ -29,6 +37,8 @@
 //   if (r.usable()) { r.curve.sample(200); r.info.coefficients; r.summary.residuals.position; }
 #include <array>
 #include <complex>
+#include <numbers>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -89,7 +99,13 @@ struct G2Options {
   /// the integrator's deviation from it reported as summary.error_estimate; without it the
   /// residuals are the integrator's own (no error estimate).
   bool verify = true;
-  double accept = 1e-10;  ///< largest verified residual (relative to chord, rad, 1/chord) for status ok
+  double accuracy = 1e-10;  ///< target: largest verified residual (relative to chord, rad, 1/chord) for status ok
+  double accept = kDefaultAccept;  ///< usable bound on the achieved error (relative), (0, 0.1]
+  /// Only the turning Δ_k = φ1 − φ0 + 2πk (above), k ∈ [−100, 100]; unset: the search.
+  std::optional<int> winding;
+  /// Largest total turning |Δ| (rad) searched without `winding`, [π, 200π] (default: at least 3π
+  /// beyond the least turning, which is at most π).
+  double max_turning = 4 * std::numbers::pi;
   void validate() const;  ///< InputError naming the option (the integrator's own check included)
 };
 
@@ -106,6 +122,9 @@ struct G2Info {
   G2Start start_used = G2Start::fast;  ///< the initial estimate of the run that gave the result
   double start_seconds = 0;            ///< part of summary.seconds spent on initial estimates
   double h = 0;                        ///< length in chord units (S = s / (h·chord))
+  int winding = 0;                     ///< k of the returned curve (of a refusal: the least-turning k)
+  double turning = 0;                  ///< Δ_k of the returned curve (of a refusal: the least turning)
+  double max_turning = 0;              ///< without `winding`: every |Δ| ≤ this was searched (else 0)
   std::array<SegmentCoefficients, 3> coefficients{};  ///< of a usable result
 };
 

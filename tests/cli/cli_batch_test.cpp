@@ -42,7 +42,8 @@ TEST(CliBatch, RowsInvalidRowsAndDefaultsFromTheCommandLine) {
                                       "# a comment\n"
                                       "\n"
                                       " \"0,0 1,0 2,1\" , 2 \n");
-  const test::CliRun r = test::run_lac_stdout("g1 --alpha 2 --batch " + file);
+  // --winding 0: the alpha = 5 row has no curve turning at most pi (it has one winding round).
+  const test::CliRun r = test::run_lac_stdout("g1 --alpha 2 --winding 0 --batch " + file);
   EXPECT_EQ(r.status, 2) << r.out;  // invalid rows: 2 at the end, every row printed
   const std::vector<Json> rows = lines(r.out);
   ASSERT_EQ(rows.size(), 6u) << r.out;
@@ -65,7 +66,7 @@ TEST(CliBatch, RowsInvalidRowsAndDefaultsFromTheCommandLine) {
 
 TEST(CliBatch, ExitStatusThreeWithoutInvalidRowsAndZeroWhenAllAreUsable) {
   const std::string mixed = batch_file("mixed", "alpha\n-1\n5\n");
-  EXPECT_EQ(test::run_lac_stdout("g1 --points '0,0 1,0 2,1' --batch " + mixed).status, 3);
+  EXPECT_EQ(test::run_lac_stdout("g1 --points '0,0 1,0 2,1' --winding 0 --batch " + mixed).status, 3);
   const std::string good = batch_file("good", "alpha\n-1\n2\n");
   EXPECT_EQ(test::run_lac_stdout("g1 --points '0,0 1,0 2,1' --batch " + good).status, 0);
   // From stdin.
@@ -76,7 +77,7 @@ TEST(CliBatch, ExitStatusThreeWithoutInvalidRowsAndZeroWhenAllAreUsable) {
 
 TEST(CliBatch, CsvRowsWithTheSummaryKeys) {
   const std::string file = batch_file("csv", "points,alpha\n\"0,0 1,0\",1\n\"0,0 1,0 2,1\",-1\n\"0,0 1,0 2,1\",5\n");
-  const test::CliRun r = test::run_lac_stdout("g1 --batch " + file + " --format csv");
+  const test::CliRun r = test::run_lac_stdout("g1 --winding 0 --batch " + file + " --format csv");
   EXPECT_EQ(r.status, 2) << r.out;
   std::istringstream in(r.out);
   std::string header, row1, row2, row3;

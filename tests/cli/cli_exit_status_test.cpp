@@ -40,7 +40,7 @@ const std::vector<Command> kCommands = {
     {"quadratic", "quadratic --alpha 1 --gamma 1 --lambda 1 --samples 3", "quadratic --alpha 1 --gamma 1 --lambda 0",
      "lambda", "quadratic --alpha 1 --gamma 1 --lambda 1 --samples 3 --integrator rk4 --h 1e-9"},
     {"g1", "g1 --points '0,0 1,0 2,1' --alpha -1", "g1 --points '0,0 1,0 2,1 3,1' --alpha -1", "points",
-     "g1 --points '0,0 1,0 2,1' --alpha 5"},  // outside the drawable region: no_solution
+     "g1 --points '0,0 1,0 2,1' --alpha 5 --winding 0"},  // outside the drawable region: no_solution
     {"compound", "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3",
      "compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 1.5", "r",
      "compound --points '0,0 1,0 2,1' --alpha0 5 --alpha1 5"},
@@ -48,11 +48,11 @@ const std::vector<Command> kCommands = {
      // κ changes sign with α ≥ 0: no_solution
      "g2 --p0 0,0 --theta0 0.3 --kappa0 1 --p1 1,0 --theta1 0.3 --kappa1 -1 --alpha 1"},
     {"scurve", "scurve --points '0,0 1,0 2,1 3,1' --alpha -1", "scurve --points '0,0 1,0 2,1 3,1' --alpha 7", "alpha",
-     // S-shaped (zero turning) with α ≥ 0: κ cannot change sign, no_solution
+     // S-shaped (zero turning) with α ≥ 0: κ cannot change sign; a full turn is not resolved (not_converged)
      "scurve --points '0,0 1,0.5 2,0.5 3,1' --alpha 1.5"},
     {"chain", "chain --points '0,0 1,1 2,0 3,1' --alpha -1", "chain --points '0,0 1,1 2,0 3,1' --alpha 9", "alpha",
-     // the second pair needs an inflection, α ≥ 0: no_solution
-     "chain --points '0,0 1,0 2,0' --thetas '0.2 -0.2 -0.4' --alpha 1"},
+     // the second pair needs an inflection at winding 0, α ≥ 0: no_solution
+     "chain --points '0,0 1,0 2,0' --thetas '0.2 -0.2 -0.4' --alpha 1 --winding 0"},
     {"space", "space " + kSpaceEnds + "--alpha -1 --beta -1 --omega 0.1 --type 1",
      "space " + kSpaceEnds + "--alpha 0 --beta 0 --omega 0.1 --type 3", "type",
      // the end tangent turns back, alpha < 0 ends early: not_converged

@@ -117,8 +117,9 @@ TEST(CliTriangle, CsvAndSvg) {
 }
 
 TEST(CliTriangle, StatusesAndBadInput) {
-  // Proven outside the drawable region: a status with its reason, exit 3 (no usable curve).
-  const nlohmann::ordered_json none = test::run_lac_json("g1 --points '0,0 1,0 2,1' --alpha 5", 3);
+  // Proven outside the drawable region at winding 0 (turnings of at most pi): a status with its
+  // reason, exit 3 (no usable curve).
+  const nlohmann::ordered_json none = test::run_lac_json("g1 --points '0,0 1,0 2,1' --alpha 5 --winding 0", 3);
   EXPECT_EQ(none["status"], "no_solution");
   EXPECT_NE(none["message"].get<std::string>().find("alpha > 1"), std::string::npos) << none.dump();
   for (const char* key : {"length", "kappa0", "kappa1"}) EXPECT_TRUE(none[key].is_null()) << key;

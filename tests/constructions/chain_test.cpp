@@ -114,15 +114,45 @@ TEST(Chain, G2ChainIsCurvatureContinuous) {
   for (size_t k = 0; k < 8; ++k) EXPECT_NEAR(r.curve.kappa_at(r.curve.segment_start(3 * k)), r.info.kappas[k], 1e-8) << k;
 }
 
-// α > 0: κ cannot change sign, so an S-shaped pair has no curve; the chain names the pair.
+// α > 0: κ cannot change sign, so an S-shaped pair has no curve turning at most π (winding 0);
+// the chain names the pair and the scope of the proof.
 TEST(Chain, APairWithoutCurveFailsTheChain) {
   ChainProblem p{.points = {{0, 0}, {1, 0}, {2, 0}}, .thetas = {0.2, -0.2, -0.4}, .alpha = 1.0};
-  const ChainResult r = solve_chain(p);
+  ChainOptions o;
+  o.g1.winding = 0;
+  const ChainResult r = solve_chain(p, o);
   EXPECT_FALSE(r.usable());
   EXPECT_EQ(r.summary.status, Status::no_solution);
   EXPECT_EQ(r.info.failed_pair, 1);
   EXPECT_NE(r.summary.message.find("pair 1"), std::string::npos) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("winding 0"), std::string::npos) << r.summary.message;
   EXPECT_TRUE(r.curve.segments().empty());
+}
+
+// Without a winding each pair takes its least-turning curve: the S-shaped pair above turns further.
+TEST(Chain, EachPairSearchesItsWindings) {
+  ChainProblem p{.points = {{0, 0}, {1, 0}, {2, 0}}, .thetas = {0.2, -0.2, -0.4}, .alpha = 1.0};
+  const ChainResult r = solve_chain(p);
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  ASSERT_EQ(r.info.windings.size(), 2u);
+  ASSERT_EQ(r.info.turnings.size(), 2u);
+  EXPECT_EQ(r.info.windings[0], 0);
+  EXPECT_NEAR(r.info.turnings[0], -0.4, 1e-12);
+  EXPECT_NE(r.info.windings[1], 0);
+  EXPECT_GT(std::abs(r.info.turnings[1]), std::numbers::pi);
+  const auto& segs = r.curve.segments();
+  ASSERT_EQ(segs.size(), 2u);
+  EXPECT_NEAR(segs[1].turning(), r.info.turnings[1], 1e-10);
+  const PositionResult end = position_at(r.curve, r.curve.length());
+  ASSERT_TRUE(usable(end.status)) << end.message;
+  EXPECT_LE(std::abs(end.point.position - std::complex<double>(2, 0)), 1e-9);
+  ASSERT_TRUE(r.summary.error);
+  EXPECT_LE(*r.summary.error, 1e-10);
+  // The G2 chain: the pairs' windings are reported as well.
+  ChainProblem q{.points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}}, .alpha = -1, .continuity = ChainContinuity::g2};
+  const ChainResult g2 = solve_chain(q);
+  ASSERT_TRUE(g2.usable()) << g2.summary.message;
+  EXPECT_EQ(g2.info.windings.size(), 3u);
 }
 
 TEST(Chain, BadInputNamesTheParameter) {

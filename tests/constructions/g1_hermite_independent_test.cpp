@@ -119,7 +119,7 @@ TEST(G1HermiteIndependent, RandomDataWithWindingsEndToEnd) {
       ++checked;
       if (std::string f = check_end_to_end(p, r); !f.empty()) {
         std::lock_guard lock(m);
-        failures.push_back(f + " winding " + std::to_string(o.winding));
+        failures.push_back(f + " winding " + std::to_string(*o.winding));
       }
     });
     EXPECT_TRUE(failures.empty()) << failures.size() << " failures, first: " << failures[0];
@@ -220,7 +220,10 @@ TEST(G1HermiteIndependent, EveryRefusalConfirmedByACompleteShapeScan) {
     std::vector<std::string> counterexamples;
     tbb::parallel_for(size_t{0}, set.size() / stride, [&](size_t i) {
       const test::G1Angles a = set[i * stride];
-      const G1HermiteResult r = solve_g1_hermite({{0, 0}, a.theta0, {1, 0}, a.theta1, alpha});
+      // Winding 0 (the scan's turning θ1 − θ0): the refusals of turnings of at most π.
+      G1HermiteOptions w0;
+      w0.winding = 0;
+      const G1HermiteResult r = solve_g1_hermite({{0, 0}, a.theta0, {1, 0}, a.theta1, alpha}, w0);
       const ShapeScan scan{alpha, a.theta0, a.theta1 - a.theta0};
       if (r.usable() && i % 8 == 0) {  // the scan is not blind: it finds the curves that exist
         ++solved_scanned;

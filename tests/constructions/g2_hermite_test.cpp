@@ -17,7 +17,7 @@ namespace lac {
 namespace {
 
 // Tolerances (one place). Lengths relative to the chord, angles in rad, curvatures × chord.
-constexpr double kEndTol = 1e-10;        // end position, angle, curvature (= G2Options::accept)
+constexpr double kEndTol = 1e-10;        // end position, angle, curvature (= G2Options::accuracy)
 constexpr double kJointTol = 1e-10;      // κ and φ continuity at S1, S2 from the coefficients
 constexpr double kReferenceTol = 1e-10;  // α = −1 against tests/reference/hermite_clothoid.csv
 
@@ -199,13 +199,87 @@ TEST(G2Hermite, BothStartsSolveTheSameProblem) {
 
 TEST(G2Hermite, NonnegativeAlphaWithCurvatureSignChangeHasNoCurve) {
   for (double alpha : {0.0, 0.5, 1.0, 2.0}) {
+    // Proven for every winding (κ cannot vanish or change sign).
     const auto r = solve_g2({{{0, 0}, 0.3, 1.0}, {{1, 0}, 0.3, -1.0}, alpha});
     EXPECT_EQ(r.summary.status, Status::no_solution) << alpha;
+    EXPECT_NE(r.summary.message.find("any winding"), std::string::npos) << r.summary.message;
     const auto z = solve_g2({{{0, 0}, 0.3, 0.0}, {{1, 0}, 0.3, 1.0}, alpha});
     EXPECT_EQ(z.summary.status, Status::no_solution) << alpha;
-    EXPECT_FALSE(z.summary.message.empty());
-    const auto t = solve_g2({{{0, 0}, 0.3, 1.0}, {{1, 0}, -0.3, 1.0}, alpha});  // turns right with κ > 0
+    EXPECT_NE(z.summary.message.find("any winding"), std::string::npos) << z.summary.message;
+    // Turning −0.6 with κ > 0 (winding 0): proven for that winding only.
+    G2Options o;
+    o.winding = 0;
+    const auto t = solve_g2({{{0, 0}, 0.3, 1.0}, {{1, 0}, -0.3, 1.0}, alpha}, o);
     EXPECT_EQ(t.summary.status, Status::no_solution) << alpha;
+    EXPECT_NE(t.summary.message.find("winding 0"), std::string::npos) << t.summary.message;
+    EXPECT_NE(t.summary.message.find("sign of kappa0"), std::string::npos) << t.summary.message;
+  }
+}
+
+// ---- the winding search ----
+// α = 1: the logarithmic spiral ρ = e^{0.2θ}, θ ∈ [0, 5], meets the data exactly; its turning is 5
+// rad, while θ1 − θ0 relative to the chord wrapped to (−π, π] is −1.28 (a right turn κ > 0 cannot make).
+TEST(G2Hermite, LeastTurningCurveFoundByDefault) {
+  const G2Problem p{{{0, 0}, 0, 1}, {{-2.55039584408841, -0.281152932983349}, 5, 0.367879441171442}, 1};
+  const G2Result r = solve_g2(p);
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  EXPECT_EQ(r.info.winding, 1);
+  EXPECT_NEAR(r.info.turning, 5, 1e-9);
+  const double L = r.curve.length();
+  EXPECT_NEAR(r.curve.theta_at(L) - r.curve.theta_at(0), 5, 1e-9);
+  EXPECT_LE(std::abs(at(r, 1).position - p.end.position), kEndTol * std::abs(p.end.position));
+  EXPECT_LE(std::abs(at(r, 0).position - p.start.position), 1e-15);
+  EXPECT_NEAR(r.curve.kappa_at(0), 1, kEndTol);
+  EXPECT_NEAR(r.curve.kappa_at(L), 0.367879441171442, kEndTol);
+  EXPECT_LE(std::abs(wrap(r.curve.theta_at(0))), kEndTol);
+  EXPECT_LE(std::abs(wrap(r.curve.theta_at(L) - 5)), kEndTol);
+  ASSERT_TRUE(r.summary.error);
+  EXPECT_LE(*r.summary.error, 1e-10);
+  // Winding 0 is refused with its proof; winding 1 is the same curve.
+  G2Options o;
+  o.winding = 0;
+  const G2Result z = solve_g2(p, o);
+  EXPECT_EQ(z.summary.status, Status::no_solution);
+  EXPECT_NE(z.summary.message.find("winding 0"), std::string::npos) << z.summary.message;
+  o.winding = 1;
+  const G2Result one = solve_g2(p, o);
+  ASSERT_TRUE(one.usable()) << one.summary.message;
+  EXPECT_NEAR(one.curve.length(), L, 1e-9 * L);
+}
+
+TEST(G2Hermite, ExplicitWindingIsHonoured) {
+  const G2Problem p{{{0, 0}, 0.6, 0.5}, {{4, 0}, -0.6, -0.3}, -0.5};
+  for (int k : {0, -1, 1}) {
+    G2Options o;
+    o.winding = k;
+    const G2Result r = solve_g2(p, o);
+    const std::string what = "winding " + std::to_string(k);
+    if (!r.usable()) {  // a turning the solver does not resolve is said so, never no_solution (α < 0)
+      EXPECT_NE(r.summary.status, Status::no_solution) << what;
+      continue;
+    }
+    EXPECT_EQ(r.info.winding, k);
+    EXPECT_NEAR(r.curve.theta_at(r.curve.length()) - r.curve.theta_at(0), -1.2 + 2 * std::numbers::pi * k, 1e-9) << what;
+  }
+}
+
+// Data that need an inflection at turnings of at most π, α ≥ 0, searched only up to π: every
+// turning is excluded by proof and the message states the bound.
+TEST(G2Hermite, SearchUpToMaxTurningStatesItsScope) {
+  const G2Problem p{{{0, 0}, 0.3, 1.0}, {{1, 0}, 0.6, 1.0}, 1.0};
+  G2Options o;
+  o.max_turning = std::numbers::pi;
+  const G2Result r = solve_g2(p, o);
+  EXPECT_EQ(r.summary.status, Status::no_solution);
+  EXPECT_NE(r.summary.message.find("no curve with total turning <= 3.14159"), std::string::npos) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("inflection"), std::string::npos) << r.summary.message;
+  EXPECT_NEAR(r.info.max_turning, std::numbers::pi, 1e-15);
+  // Searched further, the answer is a curve or an incomplete search (not_converged), never no_solution.
+  const G2Result wide = solve_g2(p);
+  if (wide.usable()) {
+    EXPECT_GT(std::abs(wide.info.turning), std::numbers::pi);
+  } else {
+    EXPECT_NE(wide.summary.status, Status::no_solution) << wide.summary.message;
   }
 }
 
@@ -233,6 +307,26 @@ TEST(G2Hermite, BadInputThrowsNamingTheParameter) {
   o = {};
   o.max_iterations = 0;
   expect_param(good, "max_iterations", o);
+  o = {};
+  o.accuracy = 2;
+  expect_param(good, "accuracy", o);
+  o = {};
+  o.accept = 0.2;
+  expect_param(good, "accept", o);
+  o = {};
+  o.winding = 101;
+  expect_param(good, "winding", o);
+  o = {};
+  o.max_turning = 3;
+  expect_param(good, "max_turning", o);
+  // The accept bound of the options is the one the result is graded against.
+  o = {};
+  o.accept = 1e-4;
+  const G2Result graded = solve_g2(good, o);
+  ASSERT_TRUE(graded.usable()) << graded.summary.message;
+  EXPECT_EQ(graded.summary.accept, 1e-4);
+  ASSERT_TRUE(graded.summary.error);
+  EXPECT_LE(*graded.summary.error, 1e-10);
   // simplex is a G2 solver now (the N-D registry's); a 1-D root finder's name is not.
   EXPECT_THROW(parse_g2_solver("secant"), InputError);
   EXPECT_EQ(parse_g2_solver("simplex"), G2Solver::simplex);
@@ -258,9 +352,9 @@ TEST(G2Hermite, IterationCapGivesStatusNotHang) {
 
 // ---- Every integrator × every solver --------------------------------------------------------
 // Each combination of a quadrature method of the registry (trial curves and the placement of the
-// segments) and a G2 solver must solve the problem with verified residuals ≤ accept and give the
+// segments) and a G2 solver must solve the problem with verified residuals ≤ accuracy and give the
 // same curve as the default (gauss-legendre, newton); at α = −1 also the Fresnel reference.
-// kAgreeTol: every combination meets the end conditions to accept = 1e-10 (tanh-sinh check), and
+// kAgreeTol: every combination meets the end conditions to accuracy = 1e-10 (tanh-sinh check), and
 // the joint data (h, q1, q2) follow from the end conditions with a condition number of ~1–10 on
 // these problems; the printed worst deviation is the measured margin.
 constexpr double kAgreeTol = 1e-9;

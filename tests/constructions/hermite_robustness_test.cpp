@@ -141,9 +141,19 @@ TEST(HermiteRobustness, G2ReachingBeyondTheDoubleRangeIsNotUsable) {
   // Was: tolerance_not_met (usable) with length = inf and inf / NaN points.
   for (const G2Problem& p : {G2Problem{{{-kMax, 0}, 0.6, 0.5 / kMax}, {{0, 0}, -0.6, -0.3 / kMax}, -0.5},
                              G2Problem{{{0, 0}, 1.5, 0}, {{0.9 * kMax, 0}, -1.5, 0}, -0.5}}) {
-    const G2Result r = solve_g2(p);
+    // Winding 0: that turning's own status; the search over windings ends not_converged (incomplete),
+    // naming the numerical failure.
+    G2Options w0;
+    w0.winding = 0;
+    const G2Result r = solve_g2(p, w0);
     EXPECT_EQ(r.summary.status, Status::numerical_failure) << r.summary.message;
     EXPECT_NE(r.summary.message.find("double range"), std::string::npos) << r.summary.message;
+    expect_finite(r);
+    const G2Result searched = solve_g2(p);
+    EXPECT_FALSE(searched.usable()) << searched.summary.message;
+    EXPECT_NE(searched.summary.status, Status::no_solution) << searched.summary.message;
+    EXPECT_NE(searched.summary.message.find("double range"), std::string::npos) << searched.summary.message;
+    expect_finite(searched);
     expect_finite(r);
   }
   // The same shape at a representable scale solves, with finite results.
