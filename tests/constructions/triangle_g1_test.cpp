@@ -580,6 +580,78 @@ TEST(PlanarSegments, FailedTrialPositionsAreTheStatus) {
   }
 }
 
+// Triangles that failed with an integrator other than the construction's own default, or near
+// the edges of the search (one leg 10^5 times the other): solved ok on the default integrator,
+// end point and tangents met, the same curve as the G1 Hermite solver's (an independent method),
+// and as the compound construction with α0 = α1.
+TEST(PlanarSegments, HardTrianglesSolveOnTheDefaultIntegrator) {
+  struct Case {
+    ControlTriangle t;
+    double alpha;
+  };
+  const Case cases[] = {
+      {{{1.395589752411964, -0.513947964720411}, {0.8635696770851874, -1.6478374828209965},
+        {0.5182812585010903, -0.6254398967027787}},
+       -3},
+      {{{-1.6409549881761696, -1.5341270760815608}, {-3.868170062732919, -3.835227568928401},
+        {-3.9881107012500503, -3.494361418769058}},
+       0},
+      {{{1.348337886011533, -1.8850596344451298}, {3.720501042527209, -1.1550417700653568},
+        {3.7205014263302636, -1.155048653098656}},
+       0.5},
+  };
+  for (const Case& c : cases) {
+    const std::string where = "alpha = " + std::to_string(c.alpha);
+    const TriangleResult g = solve_g1(c.t, c.alpha);
+    ASSERT_EQ(g.summary.status, Status::ok) << where << ": " << g.summary.message;
+    const double chord = std::abs(c.t.a2 - c.t.a0);
+    ASSERT_TRUE(g.summary.error.has_value()) << where;
+    EXPECT_LE(*g.summary.error, 1e-11) << where;
+    EXPECT_EQ(g.summary.accept, kDefaultAccept) << where;
+    const CurvePoint end = g.curve.frame_at(g.curve.length());
+    // The end points by an independent quadrature of the returned curve.
+    EXPECT_LE(std::abs(position_at(g.curve, 0.0, GaussKronrod{}).point.position - c.t.a0) / chord, kEndpointTol) << where;
+    const PositionResult e = position_at(g.curve, g.curve.length(), GaussKronrod{});
+    EXPECT_LE(std::abs(e.point.position - c.t.a2) / chord, kEndpointTol) << where;
+    // The returned segment's own tangents (its q-form closed forms, not the search's standard
+    // form) within the construction's tangent tolerance: curvature varies 10^7-fold along them.
+    const double tangent_tol = TriangleOptions{}.tangent_tolerance;
+    EXPECT_LE(std::abs(std::arg(std::polar(1.0, g.curve.frame_at(0).theta) / (c.t.a1 - c.t.a0))), tangent_tol) << where;
+    EXPECT_LE(std::abs(std::arg(std::polar(1.0, end.theta) / (c.t.a2 - c.t.a1))), tangent_tol) << where;
+    const TriangleResult m = solve_compound(c.t, c.alpha, c.alpha, 0.5);
+    ASSERT_EQ(m.summary.status, Status::ok) << where << ": " << m.summary.message;
+    EXPECT_LE(rel(m.curve.length(), g.curve.length()), kSameCurveTol) << where;
+  }
+}
+
+// The accept bound (common/accuracy.hpp): rk4 with one step of 10 over the curve leaves the
+// positions' error estimate at a large part of the chord: inaccurate, no curve, summary.error
+// says by how much; a bound that is not in (0, 0.1] is invalid input.
+TEST(PlanarSegments, BeyondTheAcceptBoundIsInaccurate) {
+  TriangleOptions o;
+  o.integrator = Rk4{.h = 10};
+  for (bool compound : {false, true}) {
+    const TriangleResult g = compound ? solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, -1, 0.5, o)
+                                      : solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, o);
+    EXPECT_EQ(g.summary.status, Status::inaccurate) << g.summary.message;
+    ASSERT_TRUE(g.summary.error.has_value());
+    EXPECT_GT(*g.summary.error, 1e-3);
+    EXPECT_NE(g.summary.message.find("accept"), std::string::npos) << g.summary.message;
+    EXPECT_TRUE(g.curve.segments().empty());
+  }
+  // The default integrator's result, graded against a bound below its error: inaccurate too.
+  TriangleOptions tight;
+  tight.accept = 1e-300;
+  const TriangleResult t = solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, tight);
+  ASSERT_TRUE(t.summary.error.has_value());
+  EXPECT_EQ(t.summary.status, *t.summary.error > 1e-300 ? Status::inaccurate : Status::ok);
+  for (double bad : {0.0, -1.0, 0.2, std::nan("")}) {
+    TriangleOptions b;
+    b.accept = bad;
+    EXPECT_THROW(solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, b), InputError) << bad;
+  }
+}
+
 TEST(PlanarSegments, SummaryCountsTheWork) {
   const TriangleResult g = solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, 1.5, 0.4);
   ASSERT_EQ(g.summary.status, Status::ok);
