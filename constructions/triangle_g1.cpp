@@ -379,8 +379,11 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
     // "extended" bisection). In x the bracket is [lo, hi] = [where f ≥ 0, where f < 0].
     Bracket b{p.u_max, p.u_max, 0.0, f0};
     bool found = false, unrepresentable_trial = false;
+    // Configuration (a) resolves Λ0 to ~1e-16 relative: probes down to 0.5·10^−12 of the range;
+    // the end form resolves Λ' over the whole double range: probes a factor 10^−4 apart.
+    const double probe_step = end_form ? 1e-4 : 0.1;
     double delta = 0.5;
-    for (int k = 0; k < o.max_bracket_probes; ++k, delta *= 0.1) {
+    for (int k = 0; k < o.max_bracket_probes; ++k, delta *= probe_step) {
       const double x = p.u_max * delta;
       const double fx = mismatch(x);
       ++info.bracket_probes;
