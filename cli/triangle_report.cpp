@@ -13,6 +13,7 @@ PreparedTriangle prepare_triangle(const TriangleArgs& a) {
   const auto p = parse_points(need(a.points, "points"), 3, "points");
   PreparedTriangle s{{{p[0][0], p[0][1]}, {p[1][0], p[1][1]}, {p[2][0], p[2][1]}}, {}, false};
   s.options.solver = parse_root_method(a.solver);
+  s.options.accept = a.common.accept;
   if (a.quadrature.integrator != "auto") {
     s.options.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
     s.explicit_integrator = true;

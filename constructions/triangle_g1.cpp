@@ -93,26 +93,35 @@ Canonical canonicalize(const ControlTriangle& t, const TriangleOptions& o, const
 /// (1−α1)Λ1'θ1 < 1 with Λ1' = Λ0 ρc^(1−α0), i.e. (d0 + d1)Λ0 < 1 in configuration a
 /// (ρc^(α0−1) = 1 − (1−α0)Λ0θ0) and d1 Λ0 < 1 in b (ρc = 1), d1 = max(0, 1−α1)θ1. This is
 /// 001 §4's "search a smaller Λ0" rule in closed form.
+///
+/// A monotonic segment with α0 < 1 can be drawn in configuration b's form as well (`end_form`,
+/// solve_g1's second search: ρ = 1 at its large-ρ end, θ ∈ [−θ0, 0]): the same curves, Λ' = Λ0 ρc^(1−α0) ∈ (0, ∞) instead of
+/// Λ0 ∈ (0, Λmax). Near Λmax the curve depends on 1 − (1−α0)Λ0θ0, which a double Λ0 resolves only
+/// to ~1e-16 absolute (a start angle off by 1e-11 rad when ρ grows 10^7-fold along the curve);
+/// Λ' carries it with full relative precision.
 struct Problem {
   double alpha0, alpha1, theta0, theta1;
   bool configuration_b;
   double turning;  // θ0 + θ1
   double d0, d1;   // the segments' terms of D
   double u_max;    // end of the search variable's range (1 = unbounded Λ0)
+  double one_minus_u_max = 0;  // 1 − u_max, exact
 
   double d() const { return configuration_b ? std::max(d0, d1) : d0 + d1; }
   // u = w/(1+w), w = Λ0 θ: maps Λ0 ∈ (0, Λmax) onto (0, u_max) for every α0, including the
-  // unbounded α0 = 1 (001: "the bisection method is extended").
-  double lambda_of(double u) const { return u / (1.0 - u) / turning; }
+  // unbounded α0 = 1 (001: "the bisection method is extended"). The search runs on
+  // x = u_max − u ∈ (0, u_max], which resolves the end of the range with relative precision.
+  double lambda_of(double x) const { return (u_max - x) / (one_minus_u_max + x) / turning; }
 };
 
-Problem make_problem(double alpha0, double alpha1, double theta0, double theta1) {
-  const bool b = alpha0 > 1;
+Problem make_problem(double alpha0, double alpha1, double theta0, double theta1, bool end_form = false) {
+  const bool b = alpha0 > 1 || end_form;
   Problem p{alpha0, alpha1, theta0, theta1, b, theta0 + theta1, b ? (alpha0 - 1.0) * theta0 : (1.0 - alpha0) * theta0,
             theta1 > 0 ? std::max(0.0, 1.0 - alpha1) * theta1 : 0.0, 1.0};
   if (const double d = p.d(); d > 0) {
     const double w_max = p.turning / d;
     p.u_max = w_max / (1.0 + w_max);
+    p.one_minus_u_max = 1.0 / (1.0 + w_max);
   }
   return p;
 }
@@ -134,6 +143,7 @@ struct Trial {
   double phi = 0;      ///< angle at the start between its tangent and the chord
   StandardCurve form;
   long evaluations = 0;
+  double error = 0;            ///< the positions' error estimate at the end point (standard-form units)
   Status status = Status::ok;  ///< of the positions (the first one not ok)
   std::string message;         ///< the positions' message when status is not ok
 };
@@ -154,6 +164,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     if (!p.configuration_b) {  // 001 Fig. 5(a): segment 0 from θ = 0 to θ0
       const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method);
       t.evaluations += r0.evaluations;
+      t.error += r0.error_estimate;
       t.status = r0.status;
       t.message = r0.message;
       f.joint = r0.point.position;
@@ -162,6 +173,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     } else {  // 001 Fig. 5(b): segment 0 from θ = −θ0 to 0, ρ = 1 at the joint
       const PositionResult r0 = position_at(c0, Parameter::theta, -p.theta0, method);
       t.evaluations += r0.evaluations;
+      t.error += r0.error_estimate;
       t.status = r0.status;
       t.message = r0.message;
       f.start = r0.point.position;
@@ -171,6 +183,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     if (p.theta1 > 0) {
       const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method);
       t.evaluations += r1.evaluations;
+      t.error += std::exp(f.log_rho_joint) * r1.error_estimate;
       if (r1.status != Status::ok && t.status == Status::ok) {
         t.status = r1.status;
         t.message = r1.message;
@@ -310,7 +323,7 @@ PlanarCurve place(const Problem& p, const StandardCurve& f, const Similarity& to
 
 template <class M>
 TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
-                     const TriangleOptions& o, const M& method, const char* fn) {
+                     const TriangleOptions& o, const M& method, const char* fn, bool end_form = false) {
   o.validate();
   require_finite(fn, compound ? "alpha0" : "alpha", alpha0);
   if (compound) {
@@ -320,7 +333,7 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   const Canonical c = canonicalize(tri, o, fn);
   const double theta0 = compound ? r * c.turning : c.turning;
   const double theta1 = compound ? c.turning - theta0 : 0.0;
-  const Problem p = make_problem(alpha0, alpha1, theta0, theta1);
+  const Problem p = make_problem(alpha0, alpha1, theta0, theta1, end_form);
 
   TriangleResult g;
   Summary& sum = g.summary;
@@ -332,63 +345,68 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   info.segment0_at_a0 = !c.swapped;
   info.target_angle = c.target;
 
-  // f(u) = φ(Λ0(u)) − target. At u = 0 the curve is the circular arc: φ = θ/2 exactly.
+  // f(x) = φ(Λ0(x)) − target. At x = u_max (Λ0 = 0) the curve is the circular arc: φ = θ/2 exactly.
   // The trial with the smallest |f| is kept: the root finders return that point, so the
   // solution curve need not be drawn again. A trial whose positions failed (a status that is not
   // usable, e.g. an integrator's step budget) has no value: NaN, and the first such failure is
   // the reason given if the search ends there.
   Trial best;
-  double best_u = -1, best_f = std::numeric_limits<double>::infinity();
+  double best_x = -1, best_f = std::numeric_limits<double>::infinity();
   Status failed = Status::ok;
   std::string failed_message;
-  auto mismatch = [&](double u) {
-    Trial t = draw(p, p.lambda_of(u), method);
+  auto mismatch = [&](double x) {
+    Trial t = draw(p, p.lambda_of(x), method);
     ++sum.constructions;
     sum.evaluations += t.evaluations;
     if (!usable(t.status) && failed == Status::ok) {
       failed = t.status;
-      failed_message = "the positions of the trial curve at Lambda0 = " + format_number(p.lambda_of(u)) + " failed (" +
+      failed_message = "the positions of the trial curve at Lambda0 = " + format_number(p.lambda_of(x)) + " failed (" +
                        std::string(to_string(t.status)) + (t.message.empty() ? "" : ": " + t.message) + ")";
     }
     if (!t.valid || !usable(t.status)) return std::numeric_limits<double>::quiet_NaN();
     const double f = t.phi - c.target;
     if (std::abs(f) < best_f) {
       best_f = std::abs(f);
-      best_u = u;
+      best_x = x;
       best = std::move(t);
     }
     return f;
   };
   const double f0 = 0.5 * c.turning - c.target;  // ≤ 0 after the swap
-  double u_root = 0;
+  double x_root = p.u_max;
   if (std::abs(f0) > o.root.f_atol) {
-    // Grow the bracket toward u_max until the sign changes (001: "extended" bisection).
-    Bracket b{0.0, 0.0, f0, 0.0};
+    // Grow the bracket toward the end of the range (x → 0) until the sign changes (001:
+    // "extended" bisection). In x the bracket is [lo, hi] = [where f ≥ 0, where f < 0].
+    Bracket b{p.u_max, p.u_max, 0.0, f0};
     bool found = false, unrepresentable_trial = false;
+    // Configuration (a) resolves Λ0 to ~1e-16 relative: probes down to 0.5·10^−12 of the range;
+    // the end form resolves Λ' over the whole double range: probes a factor 10^−4 apart.
+    const double probe_step = end_form ? 1e-4 : 0.1;
     double delta = 0.5;
-    for (int k = 0; k < o.max_bracket_probes; ++k, delta *= 0.1) {
-      const double u = p.u_max * (1.0 - delta);
-      const double fu = mismatch(u);
+    for (int k = 0; k < o.max_bracket_probes; ++k, delta *= probe_step) {
+      const double x = p.u_max * delta;
+      const double fx = mismatch(x);
       ++info.bracket_probes;
-      if (!std::isfinite(fu)) {  // not representable (or not integrable) any closer to the end of the range
+      if (!std::isfinite(fx)) {  // not representable (or not integrable) any closer to the end of the range
         unrepresentable_trial = true;
         break;
       }
-      if (fu >= 0) {
-        b.hi = u;
-        b.f_hi = fu;
+      if (fx >= 0) {
+        b.lo = x;
+        b.f_lo = fx;
         found = true;
         break;
       }
-      b.lo = u;
-      b.f_lo = fu;
+      b.hi = x;
+      b.f_hi = fx;
     }
     if (!found) {
-      // φ increases with Λ0: no curve iff the target is at or above φ's limit at the end of the range.
-      const Limit lim = start_angle_limit(p);
+      // φ increases with Λ0: no curve iff the target is at or above φ's limit at the end of the
+      // range (the same limit in either form of the curves).
+      const Limit lim = start_angle_limit(p.configuration_b && p.alpha0 <= 1 ? make_problem(alpha0, alpha1, theta0, theta1) : p);
       sum.evaluations += lim.evaluations;
       if (lim.ok) info.start_angle_limit = lim.angle;
-      const std::string range = "(0, " + (p.u_max < 1 ? format_number(p.lambda_of(p.u_max)) : std::string("inf")) + ")";
+      const std::string range = "(0, " + (p.u_max < 1 ? format_number(p.lambda_of(0.0)) : std::string("inf")) + ")";
       if (lim.ok && c.target >= lim.angle + 1e-12 + lim.error) {
         sum.status = Status::no_solution;
         sum.message = std::string(fn) + ": outside the drawable region: the start angle of the curves increases with " +
@@ -409,7 +427,7 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
                       "mismatch; " + limit_text;
       } else {
         sum.message = std::string(fn) + ": no sign change of the start-angle mismatch in " +
-                      std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.lo)) +
+                      std::to_string(info.bracket_probes) + " probes up to Lambda0 = " + format_number(p.lambda_of(b.hi)) +
                       " of " + range +
                       (unrepresentable_trial ? " (the next trial curve is not representable in double precision)" : "") +
                       "; " + limit_text + (lim.ok ? " (Lambda0 closer to the end of the range than the probes resolve)" : "");
@@ -430,16 +448,16 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
     }
     sum.status = root.status;
     sum.message = root.message;
-    u_root = root.root;
+    x_root = root.root;
   } else {
     info.residual = f0;
   }
 
   Trial t;
-  if (best_u == u_root && best.valid) {
+  if (best_x == x_root && best.valid) {
     t = std::move(best);
   } else {
-    t = draw(p, p.lambda_of(u_root), method);
+    t = draw(p, p.lambda_of(x_root), method);
     ++sum.constructions;
     sum.evaluations += t.evaluations;
   }
@@ -470,7 +488,9 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   const double rho_c = std::exp(f.log_rho_joint);
   TrianglePiece s0;
   s0.alpha = alpha0;
-  s0.lambda = f.lambda0;
+  // Λ0 of 001's standard form (ρ = 1 at the start) when the curve was drawn in the end form:
+  // Λ' ρ_start^(1−α0), ρ_start ≤ 1 that form's start radius.
+  s0.lambda = end_form ? f.lambda0 * std::exp((1.0 - alpha0) * c0.log_rho_at_theta(-theta0)) : f.lambda0;
   s0.lambda_user = f.lambda0 * std::pow(k, alpha0 - 1.0);
   s0.turning = theta0;
   s0.rho_small = k * (p.configuration_b ? c0.rho_at_theta(-theta0) : 1.0);
@@ -496,9 +516,22 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   const double e0 = std::abs(std::arg(mapped_direction(f.start_tangent) / c.leg0));
   const double e1 = std::abs(std::arg(mapped_direction(end_tangent) / c.leg1));
   sum.residuals.angle = std::max(e0, e1);
+  // Achieved error (common/accuracy.hpp): the end points are placed exactly, so the positions'
+  // error estimate over the standard-form chord is the curve's error relative to |a2 − a0|.
+  const double error_relative = t.error / std::abs(f.end - f.start);
+  if (const double e = k * t.error; std::isfinite(e)) sum.error_estimate = e;
+  sum.error = std::isfinite(error_relative) ? std::max(*sum.residuals.angle, error_relative)
+                                            : std::numeric_limits<double>::quiet_NaN();
+  sum.accept = o.accept;
+  // The accuracy target is tangent_tolerance, on the end tangents and on the positions' error
+  // relative to the chord (a fixed-step integrator reports ok positions whatever its step).
   if (!(*sum.residuals.angle <= o.tangent_tolerance) && usable(sum.status)) {
     sum.status = Status::tolerance_not_met;
     sum.message = std::string(fn) + ": end tangents miss the control legs by " + format_number(*sum.residuals.angle) + " rad";
+  } else if (!(error_relative <= o.tangent_tolerance) && usable(sum.status)) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": the positions' error estimate is " + format_number(error_relative) +
+                  " of the chord, above the accuracy target tangent_tolerance = " + format_number(o.tangent_tolerance);
   }
   if (!usable(sum.status)) return g;
   // The standard-form solution is finite; its user-unit image may not be (Λ_user = Λ k^(α−1),
@@ -521,6 +554,8 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
     sum.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
                   " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")" + why;
   }
+  std::string message = std::move(sum.message);
+  g.conclude(sum.status, std::move(message));  // inaccurate when summary.error exceeds accept
   return g;
 }
 
@@ -542,10 +577,28 @@ void TriangleOptions::validate() const {
   if (max_bracket_probes < 1 || max_bracket_probes > 30)
     throw_input_error("TriangleOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
   if (!(tangent_tolerance > 0)) throw_input_error("TriangleOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
+  validate_accept("TriangleOptions", accept);
 }
 
 TriangleResult solve_g1(const ControlTriangle& t, double alpha, const TriangleOptions& o) {
-  return timed(o, [&](const auto& m) { return solve(t, alpha, alpha, 1.0, false, o, m, "solve_g1"); });
+  return timed(o, [&](const auto& m) {
+    TriangleResult g = solve(t, alpha, alpha, 1.0, false, o, m, "solve_g1");
+    // Configuration (a) resolves Λ0 near the end of its range only to ~1e-16 absolute (Problem):
+    // a search that did not end ok there (tangents missed, no sign change resolved) is run again
+    // in the end form, whose result is taken when it is ok. The work of both is counted.
+    const Status st = g.summary.status;
+    if (alpha < 1 && (st == Status::tolerance_not_met || st == Status::not_converged)) {
+      TriangleResult e = solve(t, alpha, alpha, 1.0, false, o, m, "solve_g1", true);
+      TriangleResult& kept = e.summary.status == Status::ok ? e : g;
+      const TriangleResult& other = e.summary.status == Status::ok ? g : e;
+      kept.summary.iterations += other.summary.iterations;
+      kept.summary.evaluations += other.summary.evaluations;
+      kept.summary.constructions += other.summary.constructions;
+      kept.info.bracket_probes += other.info.bracket_probes;
+      return std::move(kept);
+    }
+    return g;
+  });
 }
 
 TriangleResult solve_compound(const ControlTriangle& t, double alpha0, double alpha1, double r, const TriangleOptions& o) {

@@ -19,11 +19,13 @@
 // proven outside the drawable region (the start angle of the trial curves increases with Λ0, and
 // the triangle's angle is at or above its limit at the end of the Λ0 range, docs/planar_segments.md);
 // not_converged when no sign change was found and nothing is proven (a curve exists when the
-// angle is below the limit: Λ0 closer to the end of its range than double precision resolves);
+// angle is below the limit: Λ0 closer to the end of its range than double precision resolves;
+// solve_g1 with α < 1 then searches again with ρ = 1 at the large-ρ end, which resolves it);
 // a root finder's failure as its own status, and so the failure of a trial curve's positions (e.g.
 // an integrator's step budget: max_iterations); tolerance_not_met (usable) when the solution's
-// positions or end tangents miss their tolerances; numerical_failure when the solution has no
-// double-precision description in user units.
+// positions or end tangents miss their tolerances but summary.error (the end-tangent residual and
+// the positions' error estimate / chord) is within TriangleOptions::accept, inaccurate beyond it;
+// numerical_failure when the solution has no double-precision description in user units.
 //
 //   lac::ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
 //   lac::TriangleResult g = lac::solve_compound(t, -0.5, 1.5, 0.4, {.integrator = lac::Rk45{}});
@@ -57,11 +59,17 @@ struct TriangleOptions {
   /// Turnings below this (collinear points) or above π minus this are rejected (InputError).
   double min_turning = 1e-8;
   /// Probes toward the end of the Λ0 range when looking for a sign change (bracket growth):
-  /// u = u_max (1 − 0.5·10^−k), k = 0 … max_bracket_probes − 1.
+  /// u = u_max (1 − 0.5·10^−k), k = 0 … max_bracket_probes − 1 (10^−4k in solve_g1's second
+  /// search with ρ = 1 at the large end, docs/planar_segments.md).
   int max_bracket_probes = 13;
-  /// A solution whose end tangents miss the control legs by more than this (rad) is reported
-  /// as tolerance_not_met.
+  /// Accuracy target: a solution whose end tangents miss the control legs by more than this
+  /// (rad), or whose positions' error estimate exceeds this relative to the chord, is reported as
+  /// tolerance_not_met.
   double tangent_tolerance = 1e-11;
+  /// Accept bound (common/accuracy.hpp) on summary.error, the larger of the end-tangent residual
+  /// (rad) and the positions' error estimate relative to the chord |a2 − a0|: beyond it the
+  /// result is inaccurate (not usable).
+  double accept = kDefaultAccept;
 
   void validate() const;
 };

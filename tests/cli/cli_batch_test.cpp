@@ -125,6 +125,12 @@ TEST(CliBatch, EveryConstructionAndEval) {
 TEST(CliBatch, BadHeaderOrFileIsOneErrorLine) {
   const std::pair<std::string, std::string> cases[] = {
       {"g1 --batch " + batch_file("unknown", "points,alfa\n\"0,0 1,0 2,1\",1\n"), "alfa"},
+      {"g1 --batch " + batch_file("typo", "pionts,alpha\n\"0,0 1,0 2,1\",1\n"),
+       "column 'pionts' names no option of this command; did you mean 'points'?"},
+      {"g1 --batch " + batch_file("unknown_far", "points,xyzzy\n\"0,0 1,0 2,1\",1\n"), "column 'xyzzy' names no option"},
+      // The same option twice is an error naming both columns, not a silent choice of one.
+      {"g1 --batch " + batch_file("duplicate", "alpha,points,alpha\n1,\"0,0 1,0 2,1\",2\n"),
+       "column 'alpha' (column 3) repeats the option of column 1"},
       {"g1 --batch " + batch_file("format", "points,format\n\"0,0 1,0 2,1\",csv\n"), "format"},
       {"g1 --batch /nonexistent/rows.csv", "cannot open"},
       {"g1 --batch " + batch_file("svg", "alpha\n1\n") + " --format svg", "svg"},
@@ -146,6 +152,45 @@ TEST(CliBatch, RowWithTheWrongNumberOfFields) {
     EXPECT_EQ(row["status"], "invalid_input");
     EXPECT_NE(row["message"].get<std::string>().find("fields"), std::string::npos) << row.dump();
   }
+}
+
+TEST(CliBatch, HeaderAfterAByteOrderMark) {
+  // Spreadsheets write UTF-8 CSV with a byte order mark before the first column name.
+  for (const std::string& header : {std::string("alpha,points"), std::string("\"alpha\",points")}) {
+    const std::string file = batch_file("bom", "\xEF\xBB\xBF" + header + "\n-1,\"0,0 1,0 2,1\"\n");
+    const test::CliRun r = test::run_lac_stdout("g1 --batch " + file);
+    EXPECT_EQ(r.status, 0) << header << "\n" << r.out;
+    const std::vector<Json> rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 1u) << r.out;
+    EXPECT_EQ(rows[0]["status"], "ok") << r.out;
+  }
+}
+
+TEST(CliBatch, BadCellIsEchoedShortAndPrintable) {
+  // A long bad cell is cut to 60 characters and "…"; a NUL byte is written as \x00, the rest of
+  // the message kept.
+  const std::string long_cell(100000, 'x');
+  const std::string file = batch_file("badcell", "points,alpha\n\"0,0 1,0 2,1\"," + long_cell + "\n\"0,0 1,0 2,1\",\"1" +
+                                                     std::string(1, '\0') + "5\"\n\"0,0 1,0 2,1\",-1\n");
+  const test::CliRun r = test::run_lac_stdout("g1 --batch " + file);
+  EXPECT_EQ(r.status, 2) << r.out.substr(0, 2000);
+  const std::vector<Json> rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 3u) << r.out.substr(0, 2000);
+  const std::string too_long = rows[0]["message"];
+  EXPECT_EQ(rows[0]["status"], "invalid_input");
+  EXPECT_LT(too_long.size(), 1200u) << too_long.substr(0, 2000);
+  EXPECT_EQ(too_long.rfind("alpha: '" + std::string(60, 'x') + "…'", 0), 0u) << too_long.substr(0, 2000);
+  const std::string nul = rows[1]["message"];
+  EXPECT_EQ(rows[1]["status"], "invalid_input");
+  EXPECT_EQ(nul.rfind("alpha: '1\\x005': a NUL byte (at character 2) is not text", 0), 0u) << nul;
+  EXPECT_EQ(rows[2]["status"], "ok");
+  // The CLI's own parsers echo a value as short.
+  const std::string points = "\"0,0 1,0 2," + std::string(5000, '1') + "z\"";
+  const std::string bad_points = batch_file("badpoints", "points,alpha\n" + points + ",-1\n");
+  const std::vector<Json> p = lines(test::run_lac_stdout("g1 --batch " + bad_points).out);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_LT(p[0]["message"].get<std::string>().size(), 400u) << p[0].dump();
+  EXPECT_NE(p[0]["message"].get<std::string>().find("…"), std::string::npos) << p[0].dump();
 }
 
 }  // namespace

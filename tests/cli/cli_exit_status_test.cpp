@@ -65,7 +65,8 @@ const std::vector<Command> kCommands = {
      "special gamma-inc --a 1 --z 1000,0"},  // e^-1000 underflows: numerical_failure
 };
 
-const std::vector<std::string> kNotUsable = {"max_iterations", "no_solution", "numerical_failure", "not_converged"};
+const std::vector<std::string> kNotUsable = {"max_iterations", "no_solution", "numerical_failure", "not_converged",
+                                             "inaccurate"};
 
 /// One line on stderr, the command named once at its start: `lac <name>: …`.
 void expect_error_line(const std::string& err, const std::string& name, const std::string& args) {
@@ -148,15 +149,43 @@ TEST(CliExitStatus, EveryErrorLineNamesTheCommandOnce) {
       {"g1 --alpha 1", "lac g1: "},                             // --points is required
       {"g2 --p0 0,0 --theta0 0 --kappa0 1 --p1 1 --theta1 0 --kappa1 1", "lac g2: "},
       {"special erf-inv --y 1 --method foo", "lac special erf-inv: "},
+      // The library names the construction as the command does ("g1: alpha …"): said once.
+      {"g1 --points '0,0 1,0 2,1' --alpha 7", "lac g1: alpha = 7 "},
+      {"g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 --p1 4,0 --theta1 -0.6 --kappa1 -0.3 --alpha 9", "lac g2: alpha = 9 "},
+      {"scurve --points '0,0 1,0 2,1 3,1' --solver s-curve --alpha -7", "lac scurve: "},
   };
   for (const auto& [args, prefix] : cases) {
     const test::CliRun r = run_lac_stderr(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.out;
     EXPECT_EQ(r.out.rfind(prefix, 0), 0u) << args << "\n" << r.out;
+    const std::string named = prefix.substr(0, prefix.find(':'));           // "lac special erf-inv"
+    const std::string command = named.substr(named.rfind(' ') + 1);        // "erf-inv"
+    EXPECT_EQ(r.out.find(command + ": " + command + ": "), std::string::npos) << args << "\n" << r.out;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << args << "\n" << r.out;
     EXPECT_EQ(r.out.find(": lac"), std::string::npos) << args << "\n" << r.out;
     EXPECT_EQ(r.out.find("error: lac"), std::string::npos) << args << "\n" << r.out;
   }
+}
+
+// A result whose achieved error exceeds the accept bound (common/accuracy.hpp) is printed with
+// status inaccurate and exits 3; --accept loosens the bound knowingly. rk4 with h = 10 takes one
+// step over the whole curve: positions off by a large part of the chord.
+TEST(CliExitStatus, ThreeForAnInaccurateResult) {
+  const std::string cases[] = {
+      "compound --points '0,0 1,0 2,1' --alpha0 -1 --alpha1 -1 --integrator rk4 --h 10",
+      "compound --points '0,0 1,0 2,1' --alpha0 -1 --alpha1 2 --r 0.3 --integrator rk4 --h 10",
+  };
+  for (const std::string& args : cases) {
+    const test::CliRun r = run_lac_stdout(args);
+    EXPECT_EQ(r.status, 3) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("\"status\": \"inaccurate\""), std::string::npos) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("\"length\": null"), std::string::npos) << args << "\n" << r.out;  // no curve
+    EXPECT_EQ(run_lac_stderr(args).out, "") << args;
+  }
+  // Its error (0.025 of the chord) within a loosened bound: usable, tolerance_not_met, exit 0.
+  const test::CliRun loose = run_lac_stdout(cases[0] + " --accept 0.1");
+  EXPECT_EQ(loose.status, 0) << loose.out;
+  EXPECT_NE(loose.out.find("\"status\": \"tolerance_not_met\""), std::string::npos) << loose.out;
 }
 
 }  // namespace

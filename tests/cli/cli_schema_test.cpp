@@ -16,7 +16,7 @@ using Json = nlohmann::ordered_json;
 
 const std::vector<std::string> kCommonKeys = {"status",     "message",     "length",  "kappa0", "kappa1",
                                               "iterations", "evaluations", "seconds", "solver", "integrator",
-                                              "residuals",  "segments"};
+                                              "residuals",  "error",       "accept",  "segments"};
 
 const std::string kSpaceEnds =
     "--p0 0,0,0 --v0 1,0,0 --p1 0.36235775447667362,0.93203908596722629,0 "
@@ -91,6 +91,12 @@ TEST(CliSchema, CommonKeysFirstInTheirOrder) {
     EXPECT_TRUE(j["message"].is_null()) << c.good;
     for (const char* key : {"length", "kappa0", "kappa1", "evaluations", "seconds"}) EXPECT_TRUE(j[key].is_number()) << c.good << " " << key;
     EXPECT_EQ(keys(j["residuals"]), (std::vector<std::string>{"position", "angle", "curvature"})) << c.good;
+    EXPECT_EQ(j["accept"], 1e-6) << c.good;  // the default accept bound (common/accuracy.hpp)
+    // The constructions that grade their achieved error themselves (triangle, space) report it.
+    if (c.good.rfind("compound", 0) == 0 || c.good.rfind("space", 0) == 0) {
+      EXPECT_TRUE(j["error"].is_number()) << c.good;
+      EXPECT_LE(j["error"].get<double>(), 1e-6) << c.good;
+    }
     ASSERT_FALSE(j["segments"].empty()) << c.good;
     for (const Json& seg : j["segments"])
       for (const char* key : {"kind", "alpha", "lambda", "length", "start", "kappa"}) EXPECT_TRUE(seg.contains(key)) << c.good << " " << key;
@@ -171,6 +177,15 @@ TEST(CliSchema, DegreesConvertEveryInputAngle) {
                             0);
   EXPECT_NEAR(deg["length"].get<double>(), rad["length"].get<double>(), 1e-12);
   EXPECT_NEAR(deg["segments"][0]["theta"].get<double>(), 0.6, 1e-15);  // output angles in radians
+}
+
+TEST(CliSchema, AcceptIsTheCommandLinesBound) {
+  for (const std::string& args : {std::string("compound --points '3,2 1.5,0.2 0.5,0.9' --alpha0 2 --alpha1 0.5 --r 0.3"),
+                                  "space " + kSpaceEnds + "--alpha -1 --beta -1"}) {
+    const Json j = run_json(args + " --accept 0.001", 0);
+    EXPECT_EQ(j["accept"], 0.001) << args;
+    EXPECT_EQ(test::run_lac_stderr(args + " --accept 0.5").status, 2) << args;  // beyond kMaxAccept
+  }
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 TEST(CliTriangle, JsonKeysAndSegmentsAgreeWithTheLibrary) {
   const std::vector<std::string> common = {"status",     "message",    "length",    "kappa0", "kappa1",
                                            "iterations", "evaluations", "seconds",  "solver", "integrator",
-                                           "residuals",  "segments",   "info"};
+                                           "residuals",  "error",      "accept",
+                                           "segments",   "info"};
   const nlohmann::ordered_json g = test::run_lac_json(kG1);
   std::vector<std::string> g1_keys = common;
   g1_keys.insert(g1_keys.end() - 1, "inflection");
@@ -99,7 +100,7 @@ TEST(CliTriangle, CsvAndSvg) {
   const test::CliRun csv = test::run_lac(kCompound + " --format csv");
   ASSERT_EQ(csv.status, 0) << csv.out;
   EXPECT_EQ(csv.out.rfind("# status,message,length,kappa0,kappa1,iterations,evaluations,seconds,solver,integrator,"
-                          "residuals.position,residuals.angle,residuals.curvature,info.segment0_at_a0,info.turning,",
+                          "residuals.position,residuals.angle,residuals.curvature,error,accept,info.segment0_at_a0,info.turning,",
                           0),
             0u)
       << csv.out;

@@ -63,6 +63,45 @@ TEST(SCurve, ParallelTangentsGiveAnSCurveWithOneInflection) {
   }
 }
 
+// The accuracy contract (common/accuracy.hpp): summary.error is the largest verified residual
+// (and the integrator's deviation from the tanh-sinh check) relative to the chord; ok within the
+// target `accuracy`; beyond `accept` inaccurate, without a curve.
+TEST(SCurve, AchievedErrorIsGradedAgainstAccuracyAndAccept) {
+  const Points P{{{0, 0}, {1, 0}, {2, 1}, {3, 1}}};
+  const SCurveResult r = solve_s_curve(P, -1.0);
+  ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+  ASSERT_TRUE(r.summary.error.has_value());
+  const double chord = std::abs(P[3] - P[0]);
+  EXPECT_GE(*r.summary.error, *r.summary.residuals.position / chord);
+  EXPECT_GE(*r.summary.error, *r.summary.residuals.angle);
+  EXPECT_LE(*r.summary.error, SCurveOptions{}.accuracy);
+  EXPECT_EQ(r.summary.accept, kDefaultAccept);
+  // rk4 with one step of 10 over the curve: the end point, checked by tanh-sinh, far off.
+  SCurveOptions coarse;
+  coarse.integrator = Rk4{.h = 10};
+  const SCurveResult c = solve_s_curve(P, -1.0, coarse);
+  EXPECT_EQ(c.summary.status, Status::inaccurate) << c.summary.message;
+  ASSERT_TRUE(c.summary.error.has_value());
+  EXPECT_GT(*c.summary.error, kDefaultAccept);
+  EXPECT_TRUE(c.curve.segments().empty());
+  EXPECT_FALSE(c.info.inflection_s.has_value());
+  // The same error within a loosened accept bound: usable, tolerance_not_met.
+  coarse.accept = 0.1;
+  const SCurveResult loose = solve_s_curve(P, -1.0, coarse);
+  if (*c.summary.error <= 0.1) {
+    EXPECT_EQ(loose.summary.status, Status::tolerance_not_met) << loose.summary.message;
+    EXPECT_FALSE(loose.curve.segments().empty());
+  }
+  for (double bad : {0.0, 0.2, std::nan("")}) {
+    SCurveOptions o;
+    o.accept = bad;
+    EXPECT_THROW(solve_s_curve(P, -1.0, o), InputError) << bad;
+  }
+  SCurveOptions above;
+  above.accuracy = 1e-3;  // a target above the accept bound
+  EXPECT_THROW(solve_s_curve(P, -1.0, above), InputError);
+}
+
 TEST(SCurve, RootMethodsAgree) {
   const Points P{{{0, 0}, {1, 0}, {2, 1.5}, {3, 1}}};
   SCurveOptions bis;
@@ -119,8 +158,8 @@ TEST(SCurve, BadInput) {
 }
 
 // Every quadrature method of the registry (the end point of every trial Λ and of the result) ×
-// every root finder of the 1-D registry: each solves (residuals ≤ accept = 1e-10 by tanh-sinh) and
-// gives the curve of the default (gauss-legendre, toms748). kAgreeTol = accept: the end direction
+// every root finder of the 1-D registry: each solves (residuals ≤ accuracy = 1e-10 by tanh-sinh) and
+// gives the curve of the default (gauss-legendre, toms748). kAgreeTol = accuracy: the end direction
 // as a function of Λ has a slope of order 1, so Λ and the length follow the integrator's error of
 // the end point (rk4, h = 1e-3: ~1e-11); the printed worst deviation is the measured margin.
 constexpr double kAgreeTol = 1e-10;

@@ -209,6 +209,32 @@ TEST(SpaceSegment, ConstructionAtGivenUnknownsReturnsTheCurve) {
   }
 }
 
+// The accuracy contract (common/accuracy.hpp): a solve's summary.error is the larger of the
+// end-point residual / chord and the end-tangent error; a construction at given unknowns grades
+// the end point only (v1 is not its condition), so the mirrored construction stays usable.
+TEST(SpaceSegment, AchievedErrorAndAcceptBound) {
+  for (const auto& c : cases(false, 2, 67)) {
+    const SpaceResult r = solve_g1_space_segment(c.ends, c.g1());
+    ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+    ASSERT_TRUE(r.summary.error.has_value());
+    const double chord = (c.ends.p1 - c.ends.p0).norm();
+    EXPECT_EQ(*r.summary.error, std::max(*r.summary.residuals.position / chord, *r.summary.residuals.angle));
+    EXPECT_LE(*r.summary.error, 1e-11);
+    EXPECT_EQ(r.summary.accept, kDefaultAccept);
+    const SpaceResult m = construct_g1_space_segment(c.ends, c.g1(), c.lambda0, c.nu0, true);
+    EXPECT_EQ(m.summary.status, Status::tolerance_not_met) << m.summary.message;
+    EXPECT_GT(*m.summary.residuals.angle, kDefaultAccept);
+    EXPECT_EQ(*m.summary.error, *m.summary.residuals.position / chord);
+  }
+  const auto param = [](auto&& f) { return test::thrown_parameter(f); };
+  for (double bad : {0.0, 0.5, std::nan("")}) {
+    SpaceSegmentOptions o;
+    o.accept = bad;
+    EXPECT_EQ(param([&] { solve_g1_space_segment(cases(false, 1, 67)[0].ends, cases(false, 1, 67)[0].g1(), o); }),
+              "accept");
+  }
+}
+
 TEST(SpaceSegment, ConstructionWithoutACurveSaysWhy) {
   const SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(std::cos(1.2), std::sin(1.2), 0), Vec3::UnitY()};
   // α = −1, Λ = 10: ρ = 1/(1 − 10 s) ends at s = 0.1 after turning 0.05 rad, far from the 1.2 rad cone.
