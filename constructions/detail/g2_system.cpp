@@ -50,7 +50,9 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
 }
 
 double g2_joint_q(const G2System& p, double kappa_tilde, double h) {
-  if (p.law.alpha >= 0 && !(kappa_tilde * p.law.sigma > 0 && std::isfinite(kappa_tilde))) {
+  // α ≥ 0, and the offset form (small |α|, where κ of the other sign is reached only within
+  // ~e^(−1/|α|) of a zero of t): the sign σ.
+  if ((p.law.alpha >= 0 || p.law.offset) && !(kappa_tilde * p.law.sigma > 0 && std::isfinite(kappa_tilde))) {
     kappa_tilde = p.law.sigma * std::sqrt(std::abs(p.kappa_s * p.kappa_e)) * h;  // geometric mean of the ends
   }
   return p.law.q_of_kappa(kappa_tilde);
