@@ -109,10 +109,13 @@ struct Power {
   // into the logarithmic spiral.
   Dual divided(Dual x, Dual Fx, Dual z) const {
     if (std::abs(p) < 0.5 && x.v != 0 && (z.v - x.v) / x.v > -1) {
-      const Dual r = (z - x) / x, R = log1p_ratio(r);
-      const double ax = std::abs(x.v), w = std::pow(ax, b);
-      const Dual Kx{std::copysign(w, x.v), b * w / ax * x.d};
-      return Kx * expm1_ratio(p * (r * R)) * R;
+      const Dual r = (z - x) / x, R = std::abs(r.v) > 0.5 ? dual_log(z / x) / r : log1p_ratio(r);  // log(z/x) direct: r ≈ −1 loses digits
+      const Dual pL = p * (r * R);
+      if (std::abs(pL.v) < 1) {  // beyond, F(z)/F(x) differs from 1 by a factor e: no cancellation
+        const double ax = std::abs(x.v), w = std::pow(ax, b);
+        const Dual Kx{std::copysign(w, x.v), b * w / ax * x.d};
+        return Kx * expm1_ratio(pL) * R;
+      }
     }
     const Dual d = z - x, m = 0.5 * (x + z);
     if (std::abs(d.v) <= 1e-3 * std::abs(m.v)) return midpoint(m, d);

@@ -119,21 +119,25 @@ struct LaLaw {
   }
 
   /// F[a, b] = (F(b) − F(a)) / (b − a), the mean curvature between q = a and q = b.
-  double divided_difference(double a, double b) const { return divided(a, kappa_of_q(a), b); }
-  /// The same with F(a) supplied (kept for callers; K(a) is what the stable form needs).
-  double divided_difference(double a, double /*Fa*/, double b) const { return divided(a, kappa_of_q(a), b); }
-  /// The same with K(a) supplied (hot loops over one segment).
-  double divided(double a, double Ka, double b) const {
+  double divided_difference(double a, double b) const { return divided(a, kappa_of_q(a), F(a), b); }
+  /// The same with F(a) supplied.
+  double divided_difference(double a, double Fa, double b) const { return divided(a, kappa_of_q(a), Fa, b); }
+  /// The same with K(a) and F(a) supplied (hot loops over one segment). Where F(b)/F(a) = e^(pL)
+  /// is within a factor e of 1 (or t has a zero between a and b) the plain difference quotient
+  /// cancels: K(a)·E₁(pL)·log1p(z)/z instead (above).
+  double divided(double a, double Ka, double Fa, double b) const {
     if (a == b) return Ka;
     const double z = relative_t(a, b);
     if (z > -1 && std::isfinite(z)) {
-      const double R = log1p_ratio(z);
-      // p·log1p(z), p = 1 − 1/α: in the offset form (1 − α)(b − a)R/t_a (finite at α = 0).
+      // log(t_b/t_a): from the ratio itself where z is not small (z = −1 + t_b/t_a would lose
+      // t_b/t_a's digits when it is tiny), log1p(z) near 1.
+      const double R = std::abs(z) > 0.5 && !log_form() ? std::log(b / a) / z : log1p_ratio(z);
+      // p·log(t_b/t_a), p = 1 − 1/α: in the offset form (1 − α)(b − a)R/t_a (finite at α = 0).
       const double pL = log_form() ? (1.0 - alpha) * (b - a) * R / (1.0 - alpha * a)
                                    : (1.0 - 1.0 / alpha) * (z * R);
-      return Ka * expm1_ratio(pL) * R;
+      if (std::abs(pL) < 1) return Ka * expm1_ratio(pL) * R;
     }
-    return (F(b) - F(a)) / (b - a);  // a zero of t between a and b (α < 0), or t(a) = 0
+    return (F(b) - Fa) / (b - a);  // no cancellation, a zero of t between a and b (α < 0), or t(a) = 0
   }
 
   /// The mirror image's law (κ → −κ): σ → −σ in the log forms; q → −q is the segment's part

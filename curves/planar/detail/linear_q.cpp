@@ -175,8 +175,8 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, lon
     if (p.graded) {
       value[i] = graded_from_zero(p, panels, evaluations, c);
     } else {
-      const double Ka = law.kappa_of_q(seg.qa);
-      const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided(seg.qa, Ka, seg.q_at(u)); };
+      const double Ka = law.kappa_of_q(seg.qa), Fa = law.F(seg.qa);
+      const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided(seg.qa, Ka, Fa, seg.q_at(u)); };
       // Parts toward a steep end, under the cap on the whole piece's turning (parts turn less):
       // beyond it one part, which gives NaN.
       const std::vector<double> cuts = steep_cuts(law, seg);
