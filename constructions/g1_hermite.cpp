@@ -168,6 +168,8 @@ long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
   return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
 }
 
+// Summary::evaluations counts kernel evaluations: Gauss–Legendre nodes plus the terms of these
+// closed-form series (a term costs about what a node does), so that it compares across α and methods.
 // The power series of the log-variable kernels, Σ (iz)^n/n! with |z| ≤ kSeriesReach: a piece turning
 // up to 3.2 rad needs no quadrature node; ≤ 34 terms to 1e-17, the largest term 3.2³/3! ≈ 5.5 (about
 // half a digit of cancellation). 1/n, and 1/(1 + np) per thread for the last p.
@@ -298,6 +300,7 @@ struct Normalized {
       const double z = std::abs(D) * eW;  // ≤ kSeriesReach
       double bound = 1;
       for (int n = 1; n < kSeriesTerms; ++n) {
+        ++evaluations;  // one series term: counted as one kernel evaluation (comparable with a node)
         c *= Complex(0, -D * kReciprocals[n]);
         A += c * T_next;
         pW *= eW;
@@ -491,6 +494,7 @@ struct Normalized {
         double Are = 0, Aim = 0, Bre = 0, Bim = 0;
         const double al = a * epl, ah = a * eph;
         for (int n = 0; n < kSeriesTerms; ++n) {
+          ++evaluations;  // one series term: counted as one kernel evaluation (comparable with a node)
           const double tA = integral(xl, xh, n), tB = integral(xl * epl, xh * eph, n + 1);
           const double sign = (n & 2) ? -1.0 : 1.0;
           if (n & 1) Aim += sign * tA, Bim += sign * tB;
