@@ -38,6 +38,32 @@ Dual dual_pow(Dual a, double e) {  // a > 0
   return {p, e * p / a.v * a.d};
 }
 Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
+Dual dual_exp(Dual a) {
+  const double e = std::exp(a.v);
+  return {e, e * a.d};
+}
+Dual dual_expm1(Dual a) {
+  const double e = std::expm1(a.v);
+  return {e, (e + 1) * a.d};
+}
+Dual dual_log1p(Dual a) { return {std::log1p(a.v), a.d / (1 + a.v)}; }  // a > −1
+// expm1(y)/y and log1p(z)/z with their derivatives (series near 0, where the quotients cancel).
+Dual expm1_ratio(Dual y) {
+  if (std::abs(y.v) < 1e-3) {
+    const double v = y.v;
+    return {1 + v * (0.5 + v * (1.0 / 6 + v / 24)), (0.5 + v * (1.0 / 3 + v / 8)) * y.d};
+  }
+  const double e = std::expm1(y.v);
+  return {e / y.v, (y.v * (e + 1) - e) / (y.v * y.v) * y.d};
+}
+Dual log1p_ratio(Dual z) {
+  if (std::abs(z.v) < 1e-3) {
+    const double v = z.v;
+    return {1 + v * (-0.5 + v * (1.0 / 3 - v / 4)), (-0.5 + v * (2.0 / 3 - 0.75 * v)) * z.d};
+  }
+  const double l = std::log1p(z.v);
+  return {l / z.v, (z.v / (1 + z.v) - l) / (z.v * z.v) * z.d};
+}
 
 constexpr int kN = 20;             // nodes per panel of the general kernel
 constexpr double kPanelTurn = 6;   // radians of φ per 20-node panel (error ≲ 1e-15)
@@ -78,8 +104,19 @@ struct Power {
     return {k[0] + k[2] * d2 / 24 + k[4] * d2 * d2 / 1920,
             (k[1] + k[3] * d2 / 24 + k[5] * d2 * d2 / 1920) * m.d + (k[2] * d.v / 12 + k[4] * d2 * d.v / 480) * d.d};
   }
-  // F[x, z] with F(x) given: the difference quotient, or the series where it cancels.
+  // F[x, z] with F(x) given: the difference quotient, or the series where it cancels. Near α = 1
+  // (|p| < 1/2; F ~ 1/p) K(x)·E₁(p log1p(r))·log1p(r)/r, r = (z − x)/x (la_law.hpp), continuous
+  // into the logarithmic spiral.
   Dual divided(Dual x, Dual Fx, Dual z) const {
+    if (std::abs(p) < 0.5 && x.v != 0 && (z.v - x.v) / x.v > -1) {
+      const Dual r = (z - x) / x, R = std::abs(r.v) > 0.5 ? dual_log(z / x) / r : log1p_ratio(r);  // log(z/x) direct: r ≈ −1 loses digits
+      const Dual pL = p * (r * R);
+      if (std::abs(pL.v) < 1) {  // beyond, F(z)/F(x) differs from 1 by a factor e: no cancellation
+        const double ax = std::abs(x.v), w = std::pow(ax, b);
+        const Dual Kx{std::copysign(w, x.v), b * w / ax * x.d};
+        return Kx * expm1_ratio(pL) * R;
+      }
+    }
     const Dual d = z - x, m = 0.5 * (x + z);
     if (std::abs(d.v) <= 1e-3 * std::abs(m.v)) return midpoint(m, d);
     return (F(z) - Fx) / d;
@@ -131,6 +168,8 @@ long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
   return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
 }
 
+// Summary::evaluations counts kernel evaluations: Gauss–Legendre nodes plus the terms of these
+// closed-form series (a term costs about what a node does), so that it compares across α and methods.
 // The power series of the log-variable kernels, Σ (iz)^n/n! with |z| ≤ kSeriesReach: a piece turning
 // up to 3.2 rad needs no quadrature node; ≤ 34 terms to 1e-17, the largest term 3.2³/3! ≈ 5.5 (about
 // half a digit of cancellation). 1/n, and 1/(1 + np) per thread for the last p.
@@ -157,7 +196,13 @@ struct Trial {
   double f = kNaN, df = kNaN;
   Complex I;
   double qa = 0, qb = 0;  // the segment's q (α ≠ 0) or log|κ| (α = 0) at u = 0, 1
+  bool offset = false;    // qa, qb in the offset form of la_law.hpp (small |α|), σ = sgn Δ
 };
+
+// Below this |α| (α ≠ 0) a shape without a zero of q on [0, 1] is evaluated by near_zero, in the
+// variables of the α = 0 law (la_law.hpp's offset form): the linear-q form's q = ±(1 − α log|κ|)
+// to first order holds log|κ| to ε/|α| only, and its amplitude λ^(−1/α) leaves the double range.
+constexpr double kSmallAlpha = 0.05;
 
 struct Normalized {
   double alpha = -1, phi0 = 0, delta = 0;
@@ -174,6 +219,10 @@ struct Normalized {
       t.qb = delta + x;
     } else if (alpha == 0) {
       if (!exponential(x, r, t)) return t;
+    } else if (std::abs(alpha) < kSmallAlpha && (alpha > 0 || std::abs(x) < std::abs(delta))) {
+      // X = log(qb/qa): x itself for α > 0; for α < 0, qb/qa = (Δ + a)/(Δ − a) (no zero of q inside).
+      const Dual X = alpha > 0 ? Dual{x, 1} : Dual{std::log1p(2 * x / (delta - x)), 2 * delta / ((delta - x) * (delta + x))};
+      if (!near_zero(X, r, t)) return t;
     } else if (!power(x, r, t)) {
       return t;
     }
@@ -251,6 +300,7 @@ struct Normalized {
       const double z = std::abs(D) * eW;  // ≤ kSeriesReach
       double bound = 1;
       for (int n = 1; n < kSeriesTerms; ++n) {
+        ++evaluations;  // one series term: counted as one kernel evaluation (comparable with a node)
         c *= Complex(0, -D * kReciprocals[n]);
         A += c * T_next;
         pW *= eW;
@@ -286,6 +336,56 @@ struct Normalized {
     };
     evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta),
                                     [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+  }
+
+  // 0 < |α| < kSmallAlpha, q of one sign on [0, 1], X = log(qb/qa): κ/κa = (1 + u·expm1(X))^(−1/α),
+  // so with p = 1 − 1/α, L(u) = log1p(u·expm1(X)) and Y = pX (→ log(κb/κa) as α → 0)
+  //   φ = φ0 + Δ·E(u),  E = expm1(pL)/expm1(Y)  (= e^(p(L−X))·expm1(−pL)/expm1(−Y) for Y > 0,
+  //   L − X = log1p((1 − u)expm1(−X))),  |κa| = |Δ|·|p·expm1(X)/expm1(Y)|,
+  // the α = 0 kernel's E = expm1(bu)/expm1(b) in the limit. Nodes: 20 per 6 rad of turning on
+  // parts at distances 2^k/|B| from the end of largest |κ| (B = −X/α = log(κb/κa); log|κ| changes by
+  // at most 2^k on each), one part for |B| ≤ 4; the parts are held fixed in X.
+  bool near_zero(Dual X, Integral& r, Trial& t) {
+    if (!(std::abs(X.v) <= 600) || delta == 0) return false;
+    const double p = 1 - 1 / alpha;
+    const Dual Y = p * X, m = dual_expm1(X), mneg = dual_expm1(-X);
+    const bool mirror = Y.v > 0;
+    const Dual den = mirror ? dual_expm1(-Y) : dual_expm1(Y);
+    const auto E = [&](double u) -> Dual {
+      if (!mirror) return dual_expm1(p * dual_log1p(u * m)) / den;
+      const Dual pL = p * dual_log1p(u * m);
+      return dual_exp(p * dual_log1p((1 - u) * mneg)) * dual_expm1(-pL) / den;
+    };
+    const double B = -X.v / alpha;
+    std::array<double, 64> cuts{};
+    int n = 0;
+    cuts[n++] = 0;
+    if (std::abs(B) > 4) {  // distances 2^k/|B| from the steep end (u = 1 for B > 0)
+      std::array<double, 64> from_end{};
+      int k = 0;
+      for (double dist = 1 / std::abs(B); dist < 1 && k < 60; dist *= 2) from_end[k++] = dist;
+      for (int i = k - 1; i >= 0; --i) {
+        const double u = B > 0 ? 1 - from_end[i] : from_end[k - 1 - i];
+        if (u > cuts[n - 1] && u < 1) cuts[n++] = u;
+      }
+    }
+    cuts[n++] = 1;
+    double e_prev = 0;
+    for (int i = 0; i + 1 < n; ++i) {
+      const double e_next = i + 2 == n ? 1.0 : E(cuts[i + 1]).v;
+      const int panels = panels_for(delta * (e_next - e_prev));
+      e_prev = e_next;
+      evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], panels,
+                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+    }
+    // log|κ_u| at u = 0 and 1, then q in the offset form (ℓ·expm1(−αℓ)/(−αℓ)).
+    const double log_den = mirror ? Y.v + std::log(-den.v) : std::log(-den.v);
+    const double la = std::log(std::abs(delta)) + std::log(std::abs(p)) + std::log(std::abs(m.v)) - log_den;
+    const double lb = la + B;
+    t.offset = true;
+    t.qa = la * LaLaw::expm1_ratio(-alpha * la);
+    t.qb = lb * LaLaw::expm1_ratio(-alpha * lb);
+    return std::isfinite(t.qa) && std::isfinite(t.qb);
   }
 
   // α ≠ 0, −1: (m, c) = λ(s, c̄) with (s, c̄) = (Δ, a)/hypot(Δ, a) and λ from the turning:
@@ -394,6 +494,7 @@ struct Normalized {
         double Are = 0, Aim = 0, Bre = 0, Bim = 0;
         const double al = a * epl, ah = a * eph;
         for (int n = 0; n < kSeriesTerms; ++n) {
+          ++evaluations;  // one series term: counted as one kernel evaluation (comparable with a node)
           const double tA = integral(xl, xh, n), tB = integral(xl * epl, xh * eph, n + 1);
           const double sign = (n & 2) ? -1.0 : 1.0;
           if (n & 1) Aim += sign * tA, Bim += sign * tB;
@@ -443,6 +544,18 @@ struct Normalized {
 
 // ∫₀¹ e^{iΔv^p} dv (0 < p < 1): v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
 Complex power_limit_integral(double delta, double p, long& evaluations) {
+  if (p < 0.25 && std::abs(delta) <= 4) {
+    // Near α = 1 v = t^k needs k ~ 4/p: Σ (iΔ)^n/(n!(1 + np)) instead (|Δ| ≤ 4: ≤ 40 terms, the
+    // largest 4⁴/4! ≈ 11), continuous in p; each term counts as one evaluation.
+    Complex sum, c = 1;
+    for (int n = 0; n < 60; ++n) {
+      sum += c / (1 + n * p);
+      ++evaluations;
+      c *= Complex(0, delta / (n + 1));
+      if (std::abs(c) < 1e-18) break;
+    }
+    return sum;
+  }
   const double k = std::max(4.0, std::ceil(4 / p));
   const int panels = panels_for(delta);
   const std::vector<double>& jac = gauss_legendre_20_node_powers(k - 1, panels);
@@ -528,8 +641,6 @@ void check_problem(const G1HermiteProblem& pr) {
   require_finite("g1", "theta0", pr.theta0);
   require_finite("g1", "theta1", pr.theta1);
   if (!(std::abs(pr.alpha) <= kG1MaxAbsAlpha)) throw_input_error("g1", "alpha", pr.alpha, "[-5, 5]");
-  if (pr.alpha != 0 && std::abs(pr.alpha) < kG1MinAbsAlpha)
-    throw_input_error("g1", "alpha", pr.alpha, "0 or 0.1 <= |alpha| <= 5");
   const double r = std::abs(pr.p1 - pr.p0);
   if (!std::isfinite(r)) throw_input_error("g1", "p1", "p1 - p0 beyond the double range (|p1 - p0| must be finite)");
   // The problem is similarity-invariant: the chord is compared with the coordinates' own size,
@@ -553,7 +664,7 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     res.conclude(Status::not_converged, "g1: the root found runs away from p1 (Re of the end-point integral <= 0)");
     return;
   }
-  if (nz.alpha > 0 && nz.delta != 0 && !std::isfinite(std::pow(std::min(std::abs(t.qa), std::abs(t.qb)), -1 / nz.alpha - 2))) {
+  if (!t.offset && nz.alpha > 0 && nz.delta != 0 && !std::isfinite(std::pow(std::min(std::abs(t.qa), std::abs(t.qb)), -1 / nz.alpha - 2))) {
     // LaLaw's series for K'' (closed-form θ of the segment) overflows there.
     res.conclude(Status::numerical_failure, "g1: the solution's end-curvature ratio (q ratio " +
                                                 format_number(std::abs(t.qb / t.qa)) +
@@ -561,7 +672,9 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     return;
   }
   const bool straight_other_law = nz.alpha >= 0 && nz.delta == 0;
-  const LaLaw law = straight_other_law ? LaLaw{-1} : LaLaw{nz.alpha, nz.alpha == 0 && nz.delta < 0 ? -1.0 : 1.0};
+  const LaLaw law = straight_other_law ? LaLaw{-1}
+                    : t.offset         ? LaLaw{nz.alpha, nz.delta < 0 ? -1.0 : 1.0, true}
+                                       : LaLaw{nz.alpha, nz.alpha == 0 && nz.delta < 0 ? -1.0 : 1.0};
   try {
     LaSegment seg(law, 0.0, 1.0, straight_other_law ? 0.0 : t.qa, straight_other_law ? 0.0 : t.qb, nz.phi0,
                   Placement{pr.p0, L * r, rot});

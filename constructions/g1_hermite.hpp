@@ -44,7 +44,7 @@
 namespace lac {
 
 constexpr double kG1MaxAbsAlpha = 5.0;   ///< |α| ≤ 5, as the G2 construction
-constexpr double kG1MinAbsAlpha = 0.1;  ///< α = 0 or |α| ≥ 0.1 (the shapes need |q|^(−1/α) beyond double below)
+constexpr double kG1MinAbsAlpha = 0;  ///< every α ∈ [−5, 5]: below |α| = 0.05 the shapes are evaluated in log|κ| (continuous through 0)
 
 struct G1HermiteProblem {
   std::complex<double> p0;

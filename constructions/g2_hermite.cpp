@@ -174,7 +174,7 @@ void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detai
   if (so.status != Status::ok) return finish(so.status, so.message);
   const std::array<detail::LinearQ, 3> segments = detail::g2_segments(p, so.h, so.q1, so.q2);
   res.info.h = so.h;
-  res.info.coefficients = coefficients(p.law, segments);
+  res.info.coefficients = coefficients({p.law.alpha, p.law.sigma}, detail::plain_form(p.law, segments));
 
   // User-unit results must be representable: the length, every point (within length/2 of the
   // chord's midpoint: the ellipse with foci p0, p1 and major axis `length`), the curvature (|κ| is
@@ -301,7 +301,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
 
   const double sigma = pr.start.kappa < 0 ? -1.0 : 1.0;
 
-  detail::G2System p{{pr.alpha, sigma}, phi0, phi1, pr.start.kappa * r, pr.end.kappa * r,
+  detail::G2System p{detail::g2_law(pr.alpha, sigma), phi0, phi1, pr.start.kappa * r, pr.end.kappa * r,
                      detail::TrialIntegrator(o.integrator)};
   std::vector<std::pair<double, std::string>> proofs, failures;  // (turning, why)
   Status failed_status = Status::not_converged;

@@ -19,7 +19,7 @@ NonlinearResidual g2_ten_unknown_residual(const G2System& p, long& evaluations) 
               seg[i] = {S[i], S[i + 1], c0 * S[i] + c1, c0 * S[i + 1] + c1, psi};
             }
             for (const auto& s : seg)
-              if (p.law.alpha > 0 && !(s.qa * p.law.sigma > 0 && s.qb * p.law.sigma > 0)) return false;
+              if (p.law.alpha > 0 && !(p.law.t_of_q(s.qa) * p.law.sigma > 0 && p.law.t_of_q(s.qb) * p.law.sigma > 0)) return false;
             r[0] = seg[0].qa - p.law.q_of_kappa(p.kappa_s * h);  // Eq. (20) as (34)
             r[1] = seg[2].qb - p.law.q_of_kappa(p.kappa_e * h);  // Eq. (21) as (35)
             r[2] = seg[0].phi_a - p.phi_s;                        // Eq. (22)

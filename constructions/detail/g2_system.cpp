@@ -9,12 +9,28 @@
 namespace lac::detail {
 namespace {
 
-// Unknowns of newton and simplex: z = (log h, z1, z2) with q = z for α ≤ 0 and q = σ e^(−αz)
-// (z = log|κ̃|) for α > 0, so that h > 0 and q keeps the only sign an α > 0 segment allows.
-double q_of_z(const G2System& p, double z) { return p.law.alpha > 0 ? p.law.sigma * std::exp(-p.law.alpha * z) : z; }
-double z_of_q(const G2System& p, double q) { return p.law.alpha > 0 ? -std::log(std::abs(q)) / p.law.alpha : q; }
+// Unknowns of newton and simplex: z = (log h, z1, z2) with q = z for α ≤ 0 and q = Q(σe^z)
+// (z = log|κ̃|) for α > 0, so that h > 0 and q keeps the only sign an α > 0 segment allows
+// (offset form: q = z·expm1(−αz)/(−αz), no exponential of z).
+double q_of_z(const G2System& p, double z) {
+  if (!(p.law.alpha > 0)) return z;
+  return p.law.offset ? z * LaLaw::expm1_ratio(-p.law.alpha * z) : p.law.sigma * std::exp(-p.law.alpha * z);
+}
+double z_of_q(const G2System& p, double q) {
+  if (!(p.law.alpha > 0)) return q;
+  return p.law.offset ? q * LaLaw::log1p_ratio(-p.law.alpha * q) : -std::log(std::abs(q)) / p.law.alpha;
+}
 
 }  // namespace
+
+LaLaw g2_law(double alpha, double sigma) { return {alpha, sigma, alpha != 0 && std::abs(alpha) < kOffsetFormMaxAbsAlpha}; }
+
+std::array<LinearQ, 3> plain_form(const LaLaw& law, const std::array<LinearQ, 3>& segments) {
+  std::array<LinearQ, 3> out = segments;
+  if (!law.offset) return out;
+  for (LinearQ& s : out) s.qa = law.t_of_q(s.qa), s.qb = law.t_of_q(s.qb);
+  return out;
+}
 
 std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, double q2) {
   const double q0 = p.law.q_of_kappa(p.kappa_s * h);
@@ -34,7 +50,9 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
 }
 
 double g2_joint_q(const G2System& p, double kappa_tilde, double h) {
-  if (p.law.alpha >= 0 && !(kappa_tilde * p.law.sigma > 0 && std::isfinite(kappa_tilde))) {
+  // α ≥ 0, and the offset form (small |α|, where κ of the other sign is reached only within
+  // ~e^(−1/|α|) of a zero of t): the sign σ.
+  if ((p.law.alpha >= 0 || p.law.offset) && !(kappa_tilde * p.law.sigma > 0 && std::isfinite(kappa_tilde))) {
     kappa_tilde = p.law.sigma * std::sqrt(std::abs(p.kappa_s * p.kappa_e)) * h;  // geometric mean of the ends
   }
   return p.law.q_of_kappa(kappa_tilde);

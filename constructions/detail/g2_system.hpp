@@ -21,6 +21,14 @@ struct G2System {
   TrialIntegrator integrate;        ///< ∫e^{iφ}dS of trial segments, the construction's method
 };
 
+/// Below this |α| (α ≠ 0) the G2 triple is held in the offset form of la_law.hpp (q carries log|κ|
+/// to rounding); above, in the plain form of 004.
+inline constexpr double kOffsetFormMaxAbsAlpha = 0.05;
+/// The law of the triple: σ = sgn κ0, the offset form for 0 < |α| < kOffsetFormMaxAbsAlpha.
+LaLaw g2_law(double alpha, double sigma);
+/// The segments in the plain form (004's q; the identity unless law.offset), for 004's coefficients.
+std::array<LinearQ, 3> plain_form(const LaLaw& law, const std::array<LinearQ, 3>& segments);
+
 /// Joint curvatures κ̃ = κh at S1, S2 and the length h: what both starts deliver.
 struct G2StartEstimate {
   double h = 1, k1 = 0, k2 = 0;

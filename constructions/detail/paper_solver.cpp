@@ -43,7 +43,7 @@ struct PaperSolver {
     return p.phi_s + kG2S1 * p.law.divided_difference(q0, q1) + (kG2S2 - kG2S1) * p.law.divided_difference(q1, q2) +
            (1 - kG2S2) * p.law.divided_difference(q2, q3) - p.phi_e;
   }
-  bool q_allowed(double q) const { return std::isfinite(q) && (p.law.alpha <= 0 || q * p.law.sigma > 0); }
+  bool q_allowed(double q) const { return std::isfinite(q) && (p.law.alpha <= 0 || p.law.t_of_q(q) * p.law.sigma > 0); }
 
   // c10 solving f = 0 for the given q2: Newton with the analytic derivative (Eqs. 42–44), and
   // bisection where Newton is unusable (c20 ≈ 0, Appendix A) or does not converge.
@@ -72,7 +72,8 @@ struct PaperSolver {
     auto fv = [&](double c) { return q_allowed(q0 + c * kG2S1) ? f(c, q2) : NAN; };
     double lo = guess, flo = fv(lo);
     if (!std::isfinite(flo)) {
-      lo = p.law.alpha > 0 ? -q0 / kG2S1 * 0.5 : 0.0;  // for α > 0 halfway to q1 = 0
+      // For α > 0 halfway to q1 = 0 (t = 0: q1 = 1/α in the offset form).
+      lo = p.law.alpha > 0 ? ((p.law.offset ? 1 / p.law.alpha : 0.0) - q0) / kG2S1 * 0.5 : 0.0;
       flo = fv(lo);
     }
     if (!std::isfinite(flo)) return std::nullopt;

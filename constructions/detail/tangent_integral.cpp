@@ -45,6 +45,12 @@ IntegralResult<Complex> igf_part(const std::vector<StandardPiece>& pieces, const
 }  // namespace
 
 IntegralResult<Complex> integrate_tangent_igf(const LaLaw& law, const LinearQ& seg, const Igf& m) {
+  if (law.offset && law.alpha != 0) {
+    // The standard form is written in the plain q (la_law.hpp): t = σ(1 − αq) (t carries log|κ|
+    // to ε/|α| only, which bounds igf's accuracy for small |α|).
+    const LinearQ plain{seg.ua, seg.ub, law.t_of_q(seg.qa), law.t_of_q(seg.qb), seg.phi_a};
+    return integrate_tangent_igf(LaLaw{law.alpha, 1.0}, plain, m);
+  }
   IntegralResult<Complex> r;
   if (law.alpha < 0 && seg.qa == 0 && seg.qb == 0) {  // κ ≡ 0: a straight segment, no standard form
     r.value = seg.length() * std::polar(1.0, seg.phi_a);

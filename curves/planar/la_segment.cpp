@@ -15,13 +15,14 @@ constexpr const char* kWho = "LaSegment";
 LaSegment::LaSegment(LaLaw law, double ua, double ub, double qa, double qb, double phi_a, Placement placement)
     : law_(law), q_{ua, ub, qa, qb, phi_a}, placement_(placement) {
   require_finite(kWho, "alpha", law.alpha);
-  if (law.alpha == 0 && law.sigma != 1 && law.sigma != -1) throw_input_error(kWho, "sigma", law.sigma, "{-1, 1}");
+  if (law.log_form() && law.sigma != 1 && law.sigma != -1) throw_input_error(kWho, "sigma", law.sigma, "{-1, 1}");
   require_finite(kWho, "ua", ua);
   require_finite(kWho, "ub", ub);
   if (!(ub > ua)) throw_input_error(kWho, "ub", ub, interval_text(ua, INFINITY) + " (ub > ua)");
   require_finite(kWho, "qa", qa);
   require_finite(kWho, "qb", qb);
-  if (law.alpha > 0 && !((qa > 0 && qb > 0) || (qa < 0 && qb < 0)))
+  const double ta = law.t_of_q(qa), tb = law.t_of_q(qb);  // the plain form's q
+  if (law.alpha > 0 && !((ta > 0 && tb > 0) || (ta < 0 && tb < 0)))
     throw_input_error(kWho, "qb", qb,
                       "values of the sign of qa = " + format_number(qa) +
                           " (for alpha > 0 the curvature cannot reach 0 or infinity: q keeps its sign)");
@@ -54,10 +55,11 @@ detail::LinearQ LaSegment::part(double u0, double u1) const {
 
 std::optional<double> LaSegment::inflection_u() const {
   if (!(law_.alpha < 0)) return std::nullopt;
-  if (qa() == 0) return ua();
-  if (qb() == 0) return ub();
-  if ((qa() < 0) == (qb() < 0)) return std::nullopt;
-  return std::clamp(ua() - qa() / q_.slope(), ua(), ub());
+  const double ta = law_.t_of_q(qa()), tb = law_.t_of_q(qb());  // zero where κ = 0
+  if (ta == 0) return ua();
+  if (tb == 0) return ub();
+  if ((ta < 0) == (tb < 0)) return std::nullopt;
+  return std::clamp(ua() + (ub() - ua()) * ta / (ta - tb), ua(), ub());
 }
 
 std::optional<double> LaSegment::inflection_s() const {
@@ -85,14 +87,14 @@ CurvePoint LaSegment::frame_at(double s) const {
 }
 
 LaSegment LaSegment::mirrored() const {
-  const bool signed_q = law_.alpha != 0;
+  const bool signed_q = !law_.log_form();
   return {law_.mirrored(), ua(), ub(), signed_q ? -qa() : qa(), signed_q ? -qb() : qb(), -phi_a(), placement_};
 }
 
 // u' = −u, so q'(u') is q(u) of the opposite curvature (κ → −κ: traversed backwards), φ'(u') = φ(u)
 // with the frame turned by π (R → −R), and the start moves to the end point.
 LaSegment LaSegment::reversed(std::complex<double> end_point) const {
-  const bool signed_q = law_.alpha != 0;
+  const bool signed_q = !law_.log_form();
   return {law_.mirrored(), -ub(), -ua(), signed_q ? -qb() : qb(), signed_q ? -qa() : qa(), phi_b(),
           Placement{end_point, scale(), -rotation()}};
 }
@@ -131,13 +133,14 @@ std::vector<double> part_ends(const LaLaw& law, const LinearQ& seg, const Tangen
   // pass through q = 0 (F(0) = 0): its turning is then |F(qa)| + |F(qb)| over |c0|, cut in equal
   // steps of u.
   const double c0 = seg.slope(), Fa = law.F(seg.qa), Fb = law.F(seg.qb);
-  const bool crosses = law.alpha != 0 && (seg.qa < 0) != (seg.qb < 0) && seg.qa != 0 && seg.qb != 0;
+  const double ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);  // the plain form's q
+  const bool crosses = law.alpha != 0 && (ta < 0) != (tb < 0) && ta != 0 && tb != 0;
   const double turning = crosses ? (std::abs(Fa) + std::abs(Fb)) / std::abs(c0) : std::abs(seg.turning(law));
   if (!(turning <= kMaxTurningPerPart * kMaxParts)) return {};
   const int n = std::max(1, static_cast<int>(std::ceil(turning / kMaxTurningPerPart)));
   std::vector<double> ends{seg.ua};
   const bool by_F = c0 != 0 && !crosses;
-  const double sign = seg.qa != 0 ? seg.qa : seg.qb;
+  const double sign = ta != 0 ? ta : tb;
   for (int k = 1; k < n; ++k) {
     const double uniform = seg.ua + (seg.ub - seg.ua) * k / n;
     double u = uniform;

@@ -89,7 +89,7 @@ std::vector<double> PlanarCurve::extreme_candidates(size_t k) const {
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     const double u_lo = cuts[i], u_hi = cuts[i + 1];
     const double phi_lo = seg.phi_at(u_lo), phi_hi = seg.phi_at(u_hi);
-    const double sign = seg.q_at(0.5 * (u_lo + u_hi)) < 0 ? -1.0 : 1.0;
+    const double sign = law.t_of_q(seg.q_at(0.5 * (u_lo + u_hi))) < 0 ? -1.0 : 1.0;
     // θ = angle + φ ≡ 0 (mod π/2): φ_j = jπ/2 − angle strictly between the piece's end angles.
     const double quarter = 0.5 * std::numbers::pi, angle = seg.rotation_angle();
     const double a = std::min(phi_lo, phi_hi) + angle, b = std::max(phi_lo, phi_hi) + angle;

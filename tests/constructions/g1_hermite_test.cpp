@@ -381,7 +381,6 @@ TEST(G1Hermite, BadInputNamesTheParameter) {
   EXPECT_EQ(with([](auto& p) { p.p0 = {NAN, 0}; }), "p0.x");
   EXPECT_EQ(with([](auto& p) { p.p1 = {0, 0}; }), "p1");
   EXPECT_EQ(with([](auto& p) { p.alpha = 5.5; }), "alpha");
-  EXPECT_EQ(with([](auto& p) { p.alpha = 0.05; }), "alpha");
   EXPECT_EQ(with([](auto& p) { p.alpha = NAN; }), "alpha");
   auto opt = [&](auto change) {
     G1HermiteOptions o;

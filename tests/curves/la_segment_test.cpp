@@ -259,3 +259,60 @@ TEST(LaSegment, InvalidInputNamesTheParameter) {
 
 }  // namespace
 }  // namespace lac
+
+namespace lac {
+namespace {
+
+// The offset form (la_law.hpp) at α = ±1e-12 is the α = 0 segment to rounding: same q (log|κ| to
+// rounding), κ, θ and positions; the plain form at that α holds log|κ| only to ε/|α|.
+TEST(LaSegment, OffsetFormIsContinuousThroughAlphaZero) {
+  const double qa = std::log(3.0), qb = std::log(0.2);
+  const LaSegment zero(LaLaw{0.0, 1.0}, 0.0, 1.0, qa, qb, 0.3);
+  for (double alpha : {1e-12, -1e-12, 1e-9, -1e-9}) {
+    const LaLaw law{alpha, 1.0, true};
+    const LaSegment seg(law, 0.0, 1.0, law.q_of_kappa(3.0), law.q_of_kappa(0.2), 0.3);
+    const double tol = 1e-13 + 10 * std::abs(alpha);
+    for (double s : {0.0, 0.25, 0.5, 1.0}) {
+      EXPECT_NEAR(seg.kappa_at(s), zero.kappa_at(s), tol * 3) << alpha << " " << s;
+      EXPECT_NEAR(seg.theta_at(s), zero.theta_at(s), tol) << alpha << " " << s;
+      EXPECT_LE(std::abs(position_at(seg, s).point.position - position_at(zero, s).point.position), tol) << alpha << " " << s;
+    }
+  }
+}
+
+// The Gauss–Legendre path's error estimate bounds its actual error (against tanh-sinh) on segments
+// near and through an inflection for small |α| < 0 (plain form) and on offset-form segments, and an
+// ok status means the value is within its tolerance.
+TEST(LaSegment, ErrorEstimateBoundsTheErrorForSmallAlpha) {
+  int checked = 0;
+  for (double alpha : {-0.3, -0.1, -0.05}) {
+    for (double qa : {-1.0, -0.3, 0.2, 0.9}) {
+      for (double qb : {-0.8, 0.5, 1.0}) {
+        const LaSegment seg(LaLaw{alpha}, 0.0, 1.0, qa, qb, 0.1);
+        const auto r = integrate_tangent(seg, 0.0, 1.0, GaussLegendre{});
+        const auto ref = integrate_tangent_reference(seg, 0.0, 1.0);
+        if (!usable(r.status) || !std::isfinite(ref.real())) continue;
+        ++checked;
+        const double err = std::abs(r.value - ref);
+        EXPECT_LE(err, r.error_estimate + 1e-13) << alpha << " " << qa << " " << qb << " " << to_string(r.status);
+      }
+    }
+  }
+  for (double alpha : {-0.01, -1e-6, 1e-6, 0.01}) {
+    const LaLaw law{alpha, 1.0, true};
+    for (double la : {-2.0, 0.5, 2.0})  // turning ≤ ~10 rad: tanh-sinh (the reference) misses at ~100 rad
+      for (double lb : {-5.0, 1.0, 3.0}) {
+        const LaSegment seg(law, 0.0, 1.0, law.q_of_kappa(std::exp(la)), law.q_of_kappa(std::exp(lb)), -0.2);
+        const auto r = integrate_tangent(seg, 0.0, 1.0, GaussLegendre{});
+        const auto ref = integrate_tangent_reference(seg, 0.0, 1.0);
+        ASSERT_TRUE(usable(r.status)) << r.message;
+        ++checked;
+        EXPECT_LE(std::abs(r.value - ref), r.error_estimate + 1e-13) << alpha << " " << la << " " << lb;
+        EXPECT_LE(std::abs(r.value - ref), 1e-12) << alpha << " " << la << " " << lb;
+      }
+  }
+  EXPECT_GE(checked, 40);
+}
+
+}  // namespace
+}  // namespace lac

@@ -48,9 +48,9 @@ IntegralResult<std::complex<double>> integrate_tangent_with(const LaLaw& law, co
   IntegralResult<std::complex<double>> r;
   const TangentPlan plan = tangent_plan(law, seg);
   const long budget = tangent_budget(m);
-  const double Fa = law.F(seg.qa);
+  const double Ka = law.kappa_of_q(seg.qa), Fa = law.F(seg.qa);
   const auto plain = [&](double u) {
-    return std::polar(1.0, seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)));
+    return std::polar(1.0, seg.phi_a + (u - seg.ua) * law.divided(seg.qa, Ka, Fa, seg.q_at(u)));
   };
   for (int i = 0; i < plan.count; ++i) {
     const TangentPiece& p = plan.pieces[static_cast<size_t>(i)];

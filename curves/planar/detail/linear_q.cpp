@@ -95,10 +95,18 @@ std::complex<double> graded_from_zero(const TangentPiece& p, int panels, long& e
 std::vector<double> steep_cuts(const LaLaw& law, const LinearQ& seg) {
   const double len = seg.length(), c0 = seg.slope();
   std::vector<double> cuts;
-  if (!(c0 != 0 && std::isfinite(c0)) || !(law.alpha >= 0)) return cuts;
+  if (!(c0 != 0 && std::isfinite(c0))) return cuts;
   bool at_a = false;
   double first = 0, ratio = 2, offset = 0;  // distances from the steep end: (first·ratio^k − offset)
-  if (law.alpha > 0) {
+  if (law.log_form()) {
+    // α = 0, or the offset form (small |α|: κ = σ|t|^(−1/α) close to the exponential): the
+    // log-derivative of |κ| is c0/t (t = 1 − αq unsigned) and largest at the end of largest |κ|;
+    // cut at 1/|c0/t|·2^k from it (log|κ| changes by at most 2^k on the part [2^k, 2^(k+1)]).
+    at_a = std::abs(law.kappa_of_q(seg.qa)) > std::abs(law.kappa_of_q(seg.qb));
+    const double t_end = 1.0 - law.alpha * (at_a ? seg.qa : seg.qb);
+    first = std::abs(t_end / c0);
+    if (!(first < 0.25 * len)) return cuts;
+  } else if (law.alpha > 0) {
     at_a = seg.qa / c0 >= 0;  // the zero lies before ua
     const double d = at_a ? seg.qa / c0 : -seg.qb / c0;
     if (!(d >= 0 && d < 0.25 * len)) return cuts;
@@ -106,9 +114,7 @@ std::vector<double> steep_cuts(const LaLaw& law, const LinearQ& seg) {
     first = std::max(d, 1e-300) * ratio;
     offset = d;
   } else {
-    at_a = c0 < 0;  // κ_u largest at ua
-    first = 1 / std::abs(c0);
-    if (!(first < 0.25 * len)) return cuts;
+    return cuts;
   }
   std::vector<double> from_end;
   for (double r = first; r - offset < len && from_end.size() < 4096; r *= ratio) from_end.push_back(r - offset);
@@ -130,7 +136,9 @@ TangentPlan tangent_plan(const LaLaw& law, const LinearQ& seg) {
   const bool rough_at_zero = law.alpha < 0 && law.alpha != -1;
   if (!rough_at_zero || seg.qa == seg.qb) return plan;
   const double ua = seg.ua, ub = seg.ub, len = ub - ua, Fa = law.F(seg.qa);
-  const double c0 = seg.slope(), u_zero = ua - seg.qa / c0;
+  // The zero of t (the plain form's q; σ(1 − αq) in the offset form), where F = 0.
+  const double ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);
+  const double c0 = seg.slope(), u_zero = ta == tb ? (ta == 0 ? ua : -HUGE_VAL) : ua - ta * len / (tb - ta);
   // 004 Eq. (5) with F(0) = 0 (α < 0): φ* = c2 = φa − F(qa)/c0, φ(e) − φ* = F(q_e)/c0.
   TangentPiece g;
   g.graded = true;
@@ -167,8 +175,8 @@ std::complex<double> integrate_tangent(const LaLaw& law, const LinearQ& seg, lon
     if (p.graded) {
       value[i] = graded_from_zero(p, panels, evaluations, c);
     } else {
-      const double Fa = law.F(seg.qa);
-      const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided_difference(seg.qa, Fa, seg.q_at(u)); };
+      const double Ka = law.kappa_of_q(seg.qa), Fa = law.F(seg.qa);
+      const auto phi = [&](double u) { return seg.phi_a + (u - seg.ua) * law.divided(seg.qa, Ka, Fa, seg.q_at(u)); };
       // Parts toward a steep end, under the cap on the whole piece's turning (parts turn less):
       // beyond it one part, which gives NaN.
       const std::vector<double> cuts = steep_cuts(law, seg);
