@@ -51,7 +51,7 @@ struct G1HermiteProblem {
   double theta0 = 0;  ///< tangent angle at p0 (rad)
   std::complex<double> p1;
   double theta1 = 0;  ///< tangent angle at p1 (rad)
-  double alpha = -1;  ///< slope of the LCG: 0 or 0.1 ≤ |α| ≤ 5
+  double alpha = -1;  ///< slope of the LCG, [−5, 5]
 };
 
 /// straight: κ ≡ 0 (φ0 = φ1 = 0). convex: no inflection, |turning| < π. convex_inflection: an
