@@ -55,6 +55,9 @@ add_library(lac::lac ALIAS lac)
 set_target_properties(lac PROPERTIES VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
                                      EXPORT_NAME lac POSITION_INDEPENDENT_CODE ON)
 target_compile_features(lac PUBLIC cxx_std_20)
+# PIC code may call its own global functions through the PLT and not inline them (ELF interposition);
+# no part of lac is meant to be interposed, so keep the optimizations of the non-PIC build.
+target_compile_options(lac PRIVATE $<$<CXX_COMPILER_ID:GNU,Clang>:-fno-semantic-interposition>)
 target_include_directories(lac PUBLIC $<BUILD_INTERFACE:${LAC_BUILD_INCLUDE_DIR}> $<INSTALL_INTERFACE:include>)
 target_sources(lac PUBLIC FILE_SET HEADERS BASE_DIRS ${LAC_BUILD_INCLUDE_DIR}
                FILES ${LAC_PUBLIC_HEADER_FILES} ${LAC_BUILD_INCLUDE_DIR}/lac/version.hpp)

@@ -15,11 +15,6 @@
 namespace lacpy {
 namespace {
 
-template <class T>
-std::function<void(T&, py::handle)> noop() {
-  return [](T&, py::handle) {};
-}
-
 // ---- option tables ----
 
 const std::vector<OptionRow<lac::G1HermiteOptions>>& g1_table() {
@@ -28,6 +23,7 @@ const std::vector<OptionRow<lac::G1HermiteOptions>>& g1_table() {
       {"solver", [](O& o, py::handle v) { o.solver = v.cast<std::string>(); },
        "auto | bisection | secant | toms748 | ceres | triangle | s-curve"},
       {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); }, "full turns added to the least turning, [-100, 100]"},
+      // Python keyword = options field name, so the Python option means what the C++ field means.
       {"accept", [](O& o, py::handle v) { o.accept = v.cast<double>(); }, "accept bound (G1HermiteOptions::accept)"},
       {"tolerance", [](O& o, py::handle v) { o.tolerance = v.cast<double>(); }, "on |f|, [1e-16, 1e-3]"},
       {"max_iterations", [](O& o, py::handle v) { o.max_iterations = v.cast<int>(); }, "[1, 10000]"},
