@@ -22,9 +22,13 @@ const std::vector<OptionRow<lac::G1HermiteOptions>>& g1_table() {
   static const std::vector<OptionRow<O>> t{
       {"solver", [](O& o, py::handle v) { o.solver = v.cast<std::string>(); },
        "auto | bisection | secant | toms748 | ceres | triangle | s-curve"},
-      {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); }, "full turns added to the least turning, [-100, 100]"},
+      {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); },
+       "only the turning theta1 - theta0 + 2 pi k (chord-relative angles), k in [-100, 100]; default: least turning"},
+      {"max_turning", [](O& o, py::handle v) { o.max_turning = v.cast<double>(); },
+       "largest total turning searched without winding (rad), [pi, 200 pi]"},
       // Python keyword = options field name, so the Python option means what the C++ field means.
-      {"accept", [](O& o, py::handle v) { o.accept = v.cast<double>(); }, "accept bound (G1HermiteOptions::accept)"},
+      {"accuracy", [](O& o, py::handle v) { o.accuracy = v.cast<double>(); }, "target for status ok (relative)"},
+      {"accept", [](O& o, py::handle v) { o.accept = v.cast<double>(); }, "usable bound on the achieved error (relative), (0, 0.1]"},
       {"tolerance", [](O& o, py::handle v) { o.tolerance = v.cast<double>(); }, "on |f|, [1e-16, 1e-3]"},
       {"max_iterations", [](O& o, py::handle v) { o.max_iterations = v.cast<int>(); }, "[1, 10000]"},
       {"max_bracket_steps", [](O& o, py::handle v) { o.max_bracket_steps = v.cast<int>(); }, "[1, 100000]"},
@@ -40,7 +44,12 @@ const std::vector<OptionRow<lac::G2Options>>& g2_table() {
       {"start", [](O& o, py::handle v) { o.start = lac::parse_g2_start(v.cast<std::string>()); }, "fast | bezier-grid"},
       {"fallback", [](O& o, py::handle v) { o.grid_fallback = v.cast<bool>(); },
        "retry from the Bezier-grid start (the CLI's --no-fallback is fallback=False)"},
-      {"accept", [](O& o, py::handle v) { o.accept = v.cast<double>(); }, "accept bound (G2Options::accept)"},
+      {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); },
+       "only the turning theta1 - theta0 + 2 pi k (chord-relative angles); default: least turning"},
+      {"max_turning", [](O& o, py::handle v) { o.max_turning = v.cast<double>(); },
+       "largest total turning searched without winding (rad), [pi, 200 pi]"},
+      {"accuracy", [](O& o, py::handle v) { o.accuracy = v.cast<double>(); }, "target for status ok (relative)"},
+      {"accept", [](O& o, py::handle v) { o.accept = v.cast<double>(); }, "usable bound on the achieved error (relative), (0, 0.1]"},
       {"tolerance", [](O& o, py::handle v) { o.tolerance = v.cast<double>(); }, "on the normalized residuals"},
       {"max_iterations", [](O& o, py::handle v) { o.max_iterations = v.cast<int>(); }, ""},
       {"max_inner_iterations", [](O& o, py::handle v) { o.max_inner_iterations = v.cast<int>(); }, ""},
@@ -128,7 +137,8 @@ Result g1_solve(const lac::G1HermiteProblem& problem, py::dict kw, const char* f
   r.info["turning"] = i.turning;
   r.info["phi0"] = i.phi0;
   r.info["phi1"] = i.phi1;
-  r.info["winding"] = o.winding;
+  r.info["winding"] = i.winding;
+  r.info["max_turning"] = i.max_turning;
   r.info["inflection"] = g.usable() ? opt(i.inflection) : py::none();
   return r;
 }
@@ -183,6 +193,9 @@ Result g2_hermite(py::object p0, py::object theta0, py::object kappa0, py::objec
   r.info["start"] = std::string(lac::to_string(g.info.start_used));
   r.info["start_seconds"] = g.info.start_seconds;
   r.info["h"] = g.usable() ? py::object(py::float_(g.info.h)) : py::none();
+  r.info["winding"] = g.info.winding;
+  r.info["turning"] = g.info.turning;
+  r.info["max_turning"] = g.info.max_turning;
   return r;
 }
 
@@ -228,6 +241,8 @@ Result chain(py::object points, double alpha, std::optional<py::object> thetas, 
   r.info["kappas"] = g.info.kappas;
   r.info["estimated_thetas"] = g.info.estimated_thetas;
   r.info["estimated_kappas"] = g.info.estimated_kappas;
+  r.info["windings"] = g.info.windings;
+  r.info["turnings"] = g.info.turnings;
   return r;
 }
 
@@ -320,7 +335,7 @@ void bind_constructions(py::module_& m) {
         "One LA segment of slope alpha from p0 with tangent angle theta0 to p1 with theta1 (G1 Hermite), or from a "
         "control triangle points=(a0, a1, a2), as `lac g1`. Options: solver (auto | bisection | secant | toms748 | ceres "
         "| triangle | s-curve), integrator (auto or a quadrature name; a named one also checks the result) with h, tol, "
-        "panels, winding, accept, tolerance, max_iterations, max_bracket_steps, degrees.");
+        "panels, winding, max_turning, accuracy, accept, tolerance, max_iterations, max_bracket_steps, degrees.");
   m.def("scurve", &scurve, py::arg("points"), py::kw_only(), py::arg("alpha") = -1.0,
         "One LA segment from four control points (tangent P0->P1 at P0, P2->P3 at P3), as `lac scurve`; options as "
         "g1_hermite (solver s-curve: [Miura et al. 2013]'s search).");
