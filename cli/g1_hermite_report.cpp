@@ -13,7 +13,7 @@ std::string g1_solver_help() {
 }  // namespace
 
 void add_g1_hermite_options(CLI::App& sub, G1HermiteArgs& a) {
-  sub.add_option("--alpha", a.alpha, "Slope alpha of the logarithmic curvature graph: 0 or 0.01 <= |alpha| <= 5 (required)");
+  sub.add_option("--alpha", a.alpha, "Slope alpha of the logarithmic curvature graph: " + alpha_range_text(kG1MinAbsAlpha, kG1MaxAbsAlpha) + " (required)");
   sub.add_option("--solver", a.solver, g1_solver_help())->capture_default_str();
   add_quadrature_options(sub, a.quadrature, "auto (the solver's own Gauss-Legendre kernel; a named method also checks the result)");
   sub.add_option("--winding", a.winding,

@@ -60,7 +60,7 @@ void setup(CLI::App& app) {
   sub->add_option("--p1", a->p1, "End point \"x,y\" (required)");
   sub->add_option("--theta1", a->theta1, "Tangent angle at the end, rad (degrees with --degrees) (required)");
   sub->add_option("--kappa1", a->kappa1, "Signed curvature at the end (required)");
-  sub->add_option("--alpha", a->alpha, "Slope of the LCG, one for the three segments, [-5, 5]")->capture_default_str();
+  sub->add_option("--alpha", a->alpha, "Slope of the LCG, one for the three segments, " + alpha_range_text(kG2MinAbsAlpha, kG2MaxAbsAlpha))->capture_default_str();
   sub->add_option("--solver", a->solver, "N-D solver: " + solver_names(g2_solvers()))->capture_default_str();
   add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--start", a->start, "Initial estimate: fast | bezier-grid")->capture_default_str();

@@ -640,7 +640,7 @@ void check_problem(const G1HermiteProblem& pr) {
   require_finite("g1", "p1.y", pr.p1.imag());
   require_finite("g1", "theta0", pr.theta0);
   require_finite("g1", "theta1", pr.theta1);
-  if (!(std::abs(pr.alpha) <= kG1MaxAbsAlpha)) throw_input_error("g1", "alpha", pr.alpha, "[-5, 5]");
+  if (!(std::abs(pr.alpha) <= kG1MaxAbsAlpha)) throw_input_error("g1", "alpha", pr.alpha, interval_text(-kG1MaxAbsAlpha, kG1MaxAbsAlpha, true, true));
   const double r = std::abs(pr.p1 - pr.p0);
   if (!std::isfinite(r)) throw_input_error("g1", "p1", "p1 - p0 beyond the double range (|p1 - p0| must be finite)");
   // The problem is similarity-invariant: the chord is compared with the coordinates' own size,
@@ -1210,15 +1210,17 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
       // Tangent intersection a1 = p0 + μ t0 = p1 − ν t1 (μ, ν > 0 for convex data).
       const double cross = (std::conj(t0) * t1).imag();
       const double mu = (std::conj(d) * t1).imag() / cross;
-      TriangleOptions to;
-      to.integrator = o.integrator;
+      TriangleOptions to;  // 001's search on its own default integrator unless one was asked for
+      if (o.verify) to.integrator = o.integrator;
+      to.accept = o.accept;
       TriangleResult tr = solve_g1({pr.p0, pr.p0 + mu * t0, pr.p1}, pr.alpha, to);
       curve = tr.curve;
       paper = tr.summary;
     } else {
       const double r = std::abs(d) / 3;
       SCurveOptions so;
-      so.integrator = o.integrator;
+      if (o.verify) so.integrator = o.integrator;
+      so.accept = o.accept;
       SCurveResult sr = solve_s_curve({pr.p0, pr.p0 + r * t0, pr.p1 - r * t1, pr.p1}, pr.alpha, so);
       curve = sr.curve;
       paper = sr.summary;

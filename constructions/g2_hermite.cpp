@@ -81,7 +81,7 @@ void check_problem(const G2Problem& pr) {
   require_finite("g2", "theta1", pr.end.theta);
   require_finite("g2", "kappa0", pr.start.kappa);
   require_finite("g2", "kappa1", pr.end.kappa);
-  if (!(std::abs(pr.alpha) <= kG2MaxAbsAlpha)) throw_input_error("g2", "alpha", pr.alpha, "[-5, 5]");
+  if (!(std::abs(pr.alpha) <= kG2MaxAbsAlpha)) throw_input_error("g2", "alpha", pr.alpha, interval_text(-kG2MaxAbsAlpha, kG2MaxAbsAlpha, true, true));
   if (pr.alpha != 0 && std::abs(pr.alpha) < kG2MinAbsAlpha)
     throw_input_error("g2", "alpha", pr.alpha, "0 or 1e-300 <= |alpha| <= 5");
   // Finite end points can still be farther apart than the double range (as R10 for S-curves).
