@@ -49,9 +49,9 @@ Report solve(const EvalArgs& a) {
   if (n > 0) pts = polyline(curve, Parameter::s, 0.0, at.point.s, n, method, form, accept);
   const double seconds = clock.seconds();
   const long evaluations = at.evaluations + (pts.empty() ? 0 : pts.back().evaluations);  // cumulative along a polyline
-  // error: the largest relative error (estimate / arc length from s = 0) over the printed points.
+  // error: the largest relative error over the printed points (estimate / arc length integrated over).
   double error = detail::relative_error(at);
-  for (const PositionResult& q : pts) error = std::max(error, detail::relative_error(q));
+  for (size_t k = 0; k < pts.size(); ++k) error = std::max(error, pts[k].error_estimate / detail::path_scale(pts, k));
   Report r{evaluation_report(at.status, at.status == Status::ok ? "" : at.message, evaluations, seconds, describe(method),
                              error, accept),
            {}};

@@ -90,9 +90,9 @@ Report solve(const QuadraticArgs& a) {
   for (const PositionResult& q : pts)
     if (!failed && !usable(q.status)) failed = &q;
   const long evaluations = start.evaluations + (pts.empty() ? 0 : pts.back().evaluations);
-  // error: the largest relative error (estimate / arc length from s = 0) over the printed points.
+  // error: the largest relative error over the printed points (estimate / arc length integrated over).
   double error = detail::relative_error(start);
-  for (const PositionResult& q : pts) error = std::max(error, detail::relative_error(q));
+  for (size_t k = 0; k < pts.size(); ++k) error = std::max(error, pts[k].error_estimate / detail::path_scale(pts, k));
   Report r{evaluation_report(failed ? failed->status : Status::ok, failed ? failed->message : "", evaluations, seconds,
                              describe(method), error, accept),
            {}};

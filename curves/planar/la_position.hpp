@@ -63,8 +63,8 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
 /// values, detail::polyline_rk4), or, after a point that failed, the nearer of the reference point
 /// and the last good point (PositionResult says what a failed point holds). The pieces share one
 /// evaluation budget (detail::polyline_budget); the points past it carry status max_iterations.
-/// `accept`: as for position_at, per point (a point past it is inaccurate; the points after it
-/// carry their own accumulated estimates and are graded on their own).
+/// `accept`: as for position_at, per point, relative to the arc length its running integral
+/// covers from s = 0 (detail::path_scale: |s_first| + |s − s_first|).
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
                                      Form form = Form::automatic, double accept = kDefaultAccept) {

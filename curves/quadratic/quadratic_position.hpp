@@ -117,7 +117,8 @@ long polyline_budget(const M& m, long n) {
 /// s = 0 and the last good point (PositionResult says what a failed point holds). Once the pieces
 /// have spent polyline_budget(method, n) evaluations (or `max_evaluations` when > 0), the
 /// remaining points are not integrated and carry status max_iterations. A κ(s) status other than
-/// ok flags its own point. `accept`: as for position_at, per point.
+/// ok flags its own point. `accept`: as for position_at, per point, relative to the arc length
+/// its running integral covers from s = 0 (detail::path_scale).
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method,
                                      double accept = kDefaultAccept, long max_evaluations = 0) {
