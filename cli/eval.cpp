@@ -1,4 +1,5 @@
 // lac eval: position and frame of a standard-form planar LA curve at θ or s (docs/math.md §1).
+#include <algorithm>
 #include <cmath>
 
 #include "cli/batch.hpp"
@@ -41,12 +42,19 @@ Report solve(const EvalArgs& a) {
   const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   const int n = sample_count(a.common);
   io::Stopwatch clock;
-  const PositionResult at = position_at(curve, p, t, method, form);
+  const double accept = a.common.accept;
+  const PositionResult at = position_at(curve, p, t, method, form, accept);
   std::vector<PositionResult> pts;
-  if (n > 0) pts = polyline(curve, p, 0.0, t, n, method, form);
+  // Samples uniform in arc length from s = 0 to the evaluated point (docs/cli.md).
+  if (n > 0) pts = polyline(curve, Parameter::s, 0.0, at.point.s, n, method, form, accept);
   const double seconds = clock.seconds();
   const long evaluations = at.evaluations + (pts.empty() ? 0 : pts.back().evaluations);  // cumulative along a polyline
-  Report r{evaluation_report(at.status, at.status == Status::ok ? "" : at.message, evaluations, seconds, describe(method)), {}};
+  // error: the largest relative error over the printed points (estimate / arc length integrated over).
+  double error = detail::relative_error(at);
+  for (size_t k = 0; k < pts.size(); ++k) error = std::max(error, pts[k].error_estimate / detail::path_scale(pts, k));
+  Report r{evaluation_report(at.status, at.status == Status::ok ? "" : at.message, evaluations, seconds, describe(method),
+                             error, accept),
+           {}};
   Json& j = r.json;
   const double s_end = at.point.s;
   set_extent(j, std::abs(s_end), 1.0, at.point.kappa);

@@ -1,5 +1,6 @@
 // lac quadratic: points of a quadratic log-aesthetic curve [Yoshida–Saito 2016] (docs/math.md §4)
 // in standard form.
+#include <algorithm>
 #include <cmath>
 
 #include "cli/batch.hpp"
@@ -17,11 +18,44 @@ struct QuadraticArgs {
   QuadratureArgs quadrature{.integrator = "gauss-kronrod"};
   std::string inverse = "ours";
   bool through_inflection = false;
+  std::optional<double> max_evaluations;
 };
 
-// Default range: 99.9 % of a finite bound, ±2/Λ toward an unbounded end.
-double default_end(double bound_value, double sign, double lambda) {
-  return std::isfinite(bound_value) ? 0.999 * bound_value : sign * 2.0 / lambda;
+// The default drawing range: from s = 0 toward each end until the first of
+//   |θ| = kDefaultTurning (total turning at most 2·kDefaultTurning),
+//   κ = e^(±kDefaultLogKappa) (curvature within a factor 1e3 of κ(0) = 1),
+//   99.9 % of a finite bound of the domain.
+// Both curvature and angle are monotone in u = log κ on the base curve, so the end is found in u by
+// bisection on the closed forms s(u), θ(u) (docs/quadratic.md). With --through-inflection and a
+// finite inflection s_i the upper end is the point-symmetric image 2 s_i − (lower end).
+constexpr double kDefaultTurning = 2 * 3.14159265358979323846;  // rad on each side of s = 0
+constexpr double kDefaultLogKappa = 6.907755278982137;           // ln 1e3
+
+double default_end(const QuadraticLaCurve& c, double direction) {
+  // direction −1: toward κ → ∞ (u > 0, s < 0); +1: toward κ → 0 (u < 0, s > 0).
+  auto acceptable = [&](double u) {
+    try {
+      const double s = c.s_at_log_kappa(u), theta = c.theta_at_log_kappa(u);
+      return std::isfinite(s) && std::isfinite(theta) && std::abs(theta) <= kDefaultTurning;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  const double u_far = -direction * kDefaultLogKappa;
+  double u;
+  if (acceptable(u_far)) {
+    u = u_far;
+  } else {
+    double good = 0.0, bad = u_far;  // acceptable(0): s = θ = 0
+    for (int i = 0; i < 200 && std::abs(bad - good) > 1e-12 * std::max(1.0, std::abs(good)); ++i) {
+      const double mid = 0.5 * (good + bad);
+      (acceptable(mid) ? good : bad) = mid;
+    }
+    u = good;
+  }
+  const double s = c.s_at_log_kappa(u);
+  const double bound = direction < 0 ? c.s_at_infinite_kappa() : c.s_at_zero_kappa();
+  return std::isfinite(bound) && std::abs(s) > 0.999 * std::abs(bound) ? 0.999 * bound : s;
 }
 
 Report solve(const QuadraticArgs& a) {
@@ -30,24 +64,37 @@ Report solve(const QuadraticArgs& a) {
   options.through_inflection = a.through_inflection;
   const double lambda = need(a.lambda, "lambda");
   const QuadraticLaCurve curve(need(a.alpha, "alpha"), need(a.gamma, "gamma"), lambda, options);
-  const Interval d = curve.s_domain();
-  const double s0 = a.s_from.value_or(default_end(d.lo, -1.0, lambda));
-  const double s1 = a.s_to.value_or(default_end(d.hi, 1.0, lambda));
+  const double lower = default_end(curve, -1.0);
+  const double upper = a.through_inflection && curve.has_inflection()
+                           ? 2.0 * curve.s_at_zero_kappa() - lower
+                           : default_end(curve, 1.0);
+  const double s0 = a.s_from.value_or(lower);
+  const double s1 = a.s_to.value_or(upper);
   curve.check_s(s0, "s-from");
   curve.check_s(s1, "s-to");
+  long max_evaluations = 0;
+  if (a.max_evaluations) {
+    const double m = *a.max_evaluations;
+    if (!(m >= 1 && m <= 1e10)) throw_input_error("lac quadratic", "max-evaluations", m, "[1, 1e10]");
+    max_evaluations = static_cast<long>(m);
+  }
+  const double accept = a.common.accept;
   const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   const int n = sample_count(a.common);
   io::Stopwatch clock;
-  const PositionResult start = position_at(curve, s0, method);
+  const PositionResult start = position_at(curve, s0, method, accept, max_evaluations);
   std::vector<PositionResult> pts;
-  if (n > 0) pts = polyline(curve, s0, s1, n, method);
+  if (n > 0) pts = polyline(curve, s0, s1, n, method, accept, max_evaluations);
   const double seconds = clock.seconds();
   const PositionResult* failed = usable(start.status) ? nullptr : &start;
   for (const PositionResult& q : pts)
     if (!failed && !usable(q.status)) failed = &q;
   const long evaluations = start.evaluations + (pts.empty() ? 0 : pts.back().evaluations);
+  // error: the largest relative error over the printed points (estimate / arc length integrated over).
+  double error = detail::relative_error(start);
+  for (size_t k = 0; k < pts.size(); ++k) error = std::max(error, pts[k].error_estimate / detail::path_scale(pts, k));
   Report r{evaluation_report(failed ? failed->status : Status::ok, failed ? failed->message : "", evaluations, seconds,
-                             describe(method)),
+                             describe(method), error, accept),
            {}};
   Json& j = r.json;
   const double kappa1 = curve.frame_at(s1).kappa;
@@ -83,9 +130,16 @@ void setup(CLI::App& app) {
   sub->add_option("--alpha", a->alpha, "Linear LCG coefficient alpha, finite (required)");
   sub->add_option("--gamma", a->gamma, "Quadratic LCG coefficient gamma, finite; 0 is the LA curve (required)");
   sub->add_option("--lambda", a->lambda, "Lambda > 0 (required)");
-  sub->add_option("--s-from", a->s_from, "Start of the drawn arc (default: 99.9% of a finite bound, else -2/lambda)");
-  sub->add_option("--s-to", a->s_to, "End of the drawn arc (default: 99.9% of a finite bound, else 2/lambda)");
+  sub->add_option("--s-from", a->s_from,
+                  "Start of the drawn arc (default: from s = 0 toward kappa -> inf until |theta| = 2 pi, kappa = 1e3 "
+                  "or 99.9% of a finite bound, whichever comes first)");
+  sub->add_option("--s-to", a->s_to,
+                  "End of the drawn arc (default: toward kappa -> 0 until |theta| = 2 pi, kappa = 1e-3 or 99.9% of a "
+                  "finite bound; with --through-inflection the mirror image of the start past the inflection)");
   add_quadrature_options(*sub, a->quadrature);
+  sub->add_option("--max-evaluations", a->max_evaluations,
+                  "Integrand evaluations the positions may spend, in [1, 1e10] (default: the integrator's budget, "
+                  "e.g. 840021 + 1344 per point for gauss-kronrod)");
   sub->add_option("--inverse", a->inverse, "erfi/erf inverse for kappa(s): ours | hybrid-003")
       ->check(CLI::IsMember({"ours", "hybrid-003"}))
       ->capture_default_str();

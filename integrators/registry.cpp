@@ -20,7 +20,7 @@ constexpr std::array<MethodInfo, std::variant_size_v<AnyQuadrature>> kMethods = 
     {Rk4::name, {}, "classical RK4 with fixed step on y' = f(t) (composite Simpson)", kRk4Options, kAnyIntegrand},
     {Rk45::name, {}, "adaptive Dormand-Prince 5(4) on y' = f(t)", kRk45Options, kAnyIntegrand},
     {GaussKronrod::name, kGkAliases, "globally adaptive Gauss-Kronrod G10K21", kGkOptions, kAnyIntegrand},
-    {GaussLegendre::name, {}, "composite 20-point Gauss-Legendre on equal panels, 10-point estimate", kGlOptions,
+    {GaussLegendre::name, {}, "composite 20-point Gauss-Legendre on equal panels; estimate from the 10-point rule and from halved panels", kGlOptions,
      kAnyIntegrand},
     {GkTanhSinh::name, {}, "Gauss-Kronrod G10K21 (depth 4), tanh-sinh where it misses its tolerance", kGkTsOptions,
      kAnyIntegrand},

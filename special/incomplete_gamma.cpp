@@ -71,10 +71,14 @@ GammaIncResult scaled_large(double a, cplx z) {
 }
 
 GammaIncResult rescale(GammaIncResult r, cplx factor) {
+  const cplx scaled = r.value;
   r.value *= factor;
   if (r.status == Status::ok && !(std::isfinite(r.value.real()) && std::isfinite(r.value.imag())))
     r.status = Status::numerical_failure;
-  if (r.status == Status::ok && r.value == cplx(0.0, 0.0)) r.status = Status::numerical_failure;  // underflow
+  // A zero from a nonzero scaled value is the true value rounded to the double range (|Γ| below
+  // the smallest subnormal, e.g. Γ(2, 800) ≈ 1e-345): the correctly rounded result, status ok.
+  // A zero scaled value cannot be right (the scaled function has no zeros there): a failure.
+  if (r.status == Status::ok && r.value == cplx(0.0, 0.0) && scaled == cplx(0.0, 0.0)) r.status = Status::numerical_failure;
   return r;
 }
 

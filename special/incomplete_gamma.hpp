@@ -40,7 +40,9 @@ constexpr std::string_view to_string(GammaIncRegion r) {
 }
 
 /// Value with how it was obtained. status is ok, max_iterations (a capped loop ran out; the
-/// value is the last iterate) or numerical_failure (overflow/underflow of the result).
+/// value is the last iterate) or numerical_failure (overflow of the result, or a non-finite
+/// intermediate). A result below the smallest subnormal double is returned as 0 with status ok
+/// (the correctly rounded value; gamma_inc_scaled gives its scaled value).
 struct GammaIncResult {
   std::complex<double> value{};
   Status status = Status::ok;

@@ -9,6 +9,8 @@
 #include <span>
 #include <string>
 
+#include "lac/common/accuracy.hpp"
+#include "lac/common/error.hpp"
 #include "lac/curves/curve.hpp"
 #include "lac/integrators/quadrature.hpp"
 
@@ -70,6 +72,36 @@ inline void take_integral(PositionResult& r, const IntegralResult<std::complex<d
   r.error_estimate = piece.error_estimate;
   r.evaluations = piece.evaluations;
   merge_status(r, piece.status, piece.message);
+}
+
+/// The size scale a position's error is relative to: the arc length from the point it was
+/// integrated from, which for LaCurve and QuadraticLaCurve is the reference point s = 0 (a
+/// polyline's points are running integrals from there, and their estimates accumulate from there).
+inline double position_scale(const PositionResult& r) {
+  return std::max(std::abs(r.point.s), std::numeric_limits<double>::min());
+}
+/// error_estimate / position_scale: the relative error a usable point's estimate bounds.
+inline double relative_error(const PositionResult& r) { return r.error_estimate / position_scale(r); }
+
+/// The accept bound (common/accuracy.hpp) on a position: a usable point whose error estimate
+/// exceeds accept × `scale` (position_scale by default; or is NaN) becomes Status::inaccurate.
+inline void grade_position(PositionResult& r, double accept, double scale = 0) {
+  if (!(scale > 0)) scale = position_scale(r);
+  if (!usable(r.status) || r.error_estimate <= accept * scale) return;
+  r.status = Status::inaccurate;
+  r.message = "error estimate " + format_number(r.error_estimate) + " exceeds accept " + format_number(accept) +
+              " x arc length " + format_number(scale) + " integrated from the reference point" +
+              (r.message.empty() ? "" : " (" + r.message + ")");
+}
+/// Arc length a polyline point's estimate accumulates over: the running integral goes from the
+/// reference point s = 0 to the first point, then through every point before it.
+inline double path_scale(std::span<const PositionResult> out, size_t k) {
+  return std::max(std::abs(out[0].point.s) + std::abs(out[k].point.s - out[0].point.s),
+                  std::numeric_limits<double>::min());
+}
+/// grade_position of every polyline point against its path_scale.
+inline void grade_positions(std::span<PositionResult> out, double accept) {
+  for (size_t k = 0; k < out.size(); ++k) grade_position(out[k], accept, path_scale(out, k));
 }
 
 /// ok < fell_back < tolerance_not_met < the statuses that are not usable.

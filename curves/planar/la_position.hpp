@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lac/common/accuracy.hpp"
 #include "lac/common/error.hpp"
 #include "lac/common/status.hpp"
 #include "lac/curves/detail/polyline.hpp"
@@ -39,15 +40,20 @@ inline Form resolve_form(const LaCurve& c, double theta_a, double theta_b, Form 
 
 namespace lac {
 
-/// Position and frame at θ or s (t inside the domain; InputError otherwise).
+/// Position and frame at θ or s (t inside the domain; InputError otherwise). `accept` (relative,
+/// (0, 0.1]): a usable position whose error estimate exceeds accept × its arc length from the
+/// reference point s = 0 gets Status::inaccurate (detail::grade_position).
 template <class M>
-PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& method, Form form = Form::automatic) {
+PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& method, Form form = Form::automatic,
+                           double accept = kDefaultAccept) {
   method.validate();
+  validate_accept("position_at", accept);
   PositionResult r;
   r.point = c.frame_at(p, t);
   r.form = resolve_form(c, 0.0, r.point.theta, form);
   const double end = r.form == Form::s ? r.point.s : r.point.theta;
   detail::take_integral(r, detail::integrate_piece(c, method, r.form, 0.0, end));
+  detail::grade_position(r, accept);
   return r;
 }
 
@@ -57,10 +63,13 @@ PositionResult position_at(const LaCurve& c, Parameter p, double t, const M& met
 /// values, detail::polyline_rk4), or, after a point that failed, the nearer of the reference point
 /// and the last good point (PositionResult says what a failed point holds). The pieces share one
 /// evaluation budget (detail::polyline_budget); the points past it carry status max_iterations.
+/// `accept`: as for position_at, per point, relative to the arc length its running integral
+/// covers from s = 0 (detail::path_scale: |s_first| + |s − s_first|).
 template <class M>
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n, const M& method,
-                                     Form form = Form::automatic) {
+                                     Form form = Form::automatic, double accept = kDefaultAccept) {
   method.validate();
+  validate_accept("polyline", accept);
   if (n < 2 || n > 1'000'000) throw_input_error("polyline", "points", n, "[2, 1000000]");
   // The domain is an interval: checking both ends covers every point clamped between them.
   const char* name = p == Parameter::theta ? "theta" : "s";
@@ -89,7 +98,10 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
     first = used == Form::s
                 ? detail::polyline_rk4(c, method, used, detail::SFormSweepIntegrand{&c}, frames_in_form, out)
                 : detail::polyline_rk4(c, method, used, detail::ThetaFormSweepIntegrand{&c}, frames_in_form, out);
-    if (first == out.size()) return out;
+    if (first == out.size()) {
+      detail::grade_positions(out, accept);
+      return out;
+    }
     // A running sum that is no longer finite: the remaining points piece by piece, from the last
     // good point, within what is left of the sweep's step budget.
     state.spent = first > 0 ? out[first - 1].evaluations : 0;
@@ -100,14 +112,16 @@ std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, d
   for (size_t k = first; k < out.size(); ++k) out[k].form = used;
   detail::anchored_samples(std::span(out).subspan(first), std::span<const double>(ts).subspan(first), state, budget,
                            [&](double a, double b) { return detail::integrate_piece(c, piece_method, used, a, b); });
+  detail::grade_positions(out, accept);
   return out;
 }
 
 /// Run-time choice of the method (make_quadrature by name): one dispatch, then the templates above.
 PositionResult position_at(const LaCurve& c, Parameter p, double t, const AnyQuadrature& method,
-                           Form form = Form::automatic);
+                           Form form = Form::automatic, double accept = kDefaultAccept);
 std::vector<PositionResult> polyline(const LaCurve& c, Parameter p, double t0, double t1, int n,
-                                     const AnyQuadrature& method, Form form = Form::automatic);
+                                     const AnyQuadrature& method, Form form = Form::automatic,
+                                     double accept = kDefaultAccept);
 
 /// The arc-length forms every curve model offers (PlanarCurveModel, curves/curve.hpp).
 template <class M>

@@ -42,12 +42,14 @@ auto with_quadrature(const AnyQuadrature& method, F&& f) {
 
 }  // namespace
 
-PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method) {
-  return with_quadrature(method, [&](const auto& m) { return position_at(c, s, m); });
+PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method, double accept,
+                           long max_evaluations) {
+  return with_quadrature(method, [&](const auto& m) { return position_at(c, s, m, accept, max_evaluations); });
 }
 
-std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method) {
-  return with_quadrature(method, [&](const auto& m) { return polyline(c, s0, s1, n, m); });
+std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method,
+                                     double accept, long max_evaluations) {
+  return with_quadrature(method, [&](const auto& m) { return polyline(c, s0, s1, n, m, accept, max_evaluations); });
 }
 
 namespace {
@@ -162,7 +164,8 @@ void store(PositionResult& r, const Node& node, const Path& path) {
 
 }  // namespace
 
-std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n) {
+std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n, double accept) {
+  validate_accept("quadratic hermite_polyline", accept);
   if (n < 2) throw_input_error("quadratic hermite_polyline", "points", n, "[2, inf)");
   c.check_s(s0, "s_from");
   c.check_s(s1, "s_to");
@@ -200,6 +203,7 @@ std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s
     cur = advance(c, cur, grid(k), down, kFrom);
     store(out[k], cur, down);
   }
+  detail::grade_positions(out, accept);
   return out;
 }
 

@@ -6,11 +6,14 @@
 // for the s-form). The tangent is (cos θ, sin θ) of the returned point. A κ(s) status other
 // than ok at a returned point (003's hybrid inverse outside its range) is merged into that
 // point's status; inside the quadrature the integrand cannot report it.
+#include <algorithm>
 #include <complex>
 #include <concepts>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "lac/common/accuracy.hpp"
 #include "lac/curves/detail/polyline.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/quadratic/quadratic_curve.hpp"
@@ -24,18 +27,79 @@ struct QuadraticSFormIntegrand {  // always inlined: see ThetaFormIntegrand (la_
   const QuadraticLaCurve* curve;
   [[gnu::always_inline]] std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
 };
+
+/// ∫ e^(iθ) over [a, b] (s inside s_domain()) in pieces of at most kMaxTurningPerPiece rad of
+/// |Δθ| each (bisection in s, at most 60 levels; first at the inflection when [a, b] passes it,
+/// where θ turns back), so that no quadrature call is given a piece whose oscillation it cannot
+/// resolve (near κ → ∞ the turning concentrates in a tiny arc). `budget`: evaluations this call
+/// may spend; past it status max_iterations, naming the CLI option that raises it.
+template <QuadratureMethod M>
+IntegralResult<std::complex<double>> integrate_quadratic(const QuadraticLaCurve& c, const M& m, double a, double b,
+                                                         long budget) {
+  IntegralResult<std::complex<double>> r;
+  if (a == b) return r;
+  const QuadraticSFormIntegrand f{&c};
+  auto piece = [&](auto&& self, double lo, double hi, double theta_lo, double theta_hi, int depth) -> bool {
+    if (r.evaluations >= budget) {
+      r.status = Status::max_iterations;
+      r.message = std::string(M::name) + ": evaluation budget " + std::to_string(budget) + " exhausted after " +
+                  std::to_string(r.evaluations) + " evaluations at s = " + format_number(lo) + " of [" +
+                  format_number(a) + ", " + format_number(b) + "] (pieces of at most " +
+                  format_number(kMaxTurningPerPiece) + " rad); raise --max-evaluations (range [1, 1e10])";
+      return false;
+    }
+    if (depth < 60 && std::abs(theta_hi - theta_lo) > kMaxTurningPerPiece) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid > std::min(lo, hi) && mid < std::max(lo, hi)) {
+        const double theta_mid = c.theta_at_s(mid);
+        return self(self, lo, mid, theta_lo, theta_mid, depth + 1) && self(self, mid, hi, theta_mid, theta_hi, depth + 1);
+      }
+    }
+    add_part(r, m.integrate(f, lo, hi));
+    return true;
+  };
+  const double inflection = c.s_at_zero_kappa();
+  const bool passes = c.options().through_inflection && c.has_inflection() && std::min(a, b) < inflection &&
+                      std::max(a, b) > inflection;
+  const double theta_a = c.theta_at_s(a), theta_b = c.theta_at_s(b);
+  if (passes) {
+    const double theta_i = c.theta_at_zero_kappa();
+    if (piece(piece, a, inflection, theta_a, theta_i, 0)) piece(piece, inflection, b, theta_i, theta_b, 0);
+  } else {
+    piece(piece, a, b, theta_a, theta_b, 0);
+  }
+  if (usable(r.status) && !(std::isfinite(r.error_estimate) && std::isfinite(std::abs(r.value)))) {
+    r.status = Status::numerical_failure;
+    r.message = "non-finite position or error estimate";
+  }
+  return r;
+}
 }  // namespace detail
 
-/// Position and frame at arc length s (inside s_domain(); InputError otherwise).
+/// Evaluation budget of one position call: the method's per-call budget (detail::evaluation_budget).
 template <QuadratureMethod M>
-PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method) {
+long position_budget(const M& m) {
+  if constexpr (std::same_as<M, Rk4>) return 2 * m.max_steps + 1;
+  else return detail::evaluation_budget(m);
+}
+
+/// Position and frame at arc length s (inside s_domain(); InputError otherwise). `accept`
+/// (relative, (0, 0.1]): a usable position whose error estimate exceeds accept × |s| (its arc
+/// length from the reference point s = 0) gets Status::inaccurate. `max_evaluations` > 0 replaces
+/// position_budget(method).
+template <QuadratureMethod M>
+PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method, double accept = kDefaultAccept,
+                           long max_evaluations = 0) {
   method.validate();
+  validate_accept("quadratic position_at", accept);
   PositionResult r;
   KappaSolution k;
   r.point = c.frame_at(s, &k);
   r.form = Form::s;
   detail::merge_status(r, k.status, "kappa(s): " + std::string(to_string(k.status)));
-  detail::take_integral(r, method.integrate(detail::QuadraticSFormIntegrand{&c}, 0.0, s));
+  detail::take_integral(r, detail::integrate_quadratic(c, method, 0.0, s, max_evaluations > 0 ? max_evaluations : position_budget(method)));
+  if (!usable(r.status)) r.error_estimate = std::numeric_limits<double>::infinity();
+  detail::grade_position(r, accept);
   return r;
 }
 
@@ -51,11 +115,15 @@ long polyline_budget(const M& m, long n) {
 /// from a point known to be right: the previous point (running integrals from the reference point
 /// s = 0: first piece 0 → s0, then piece by piece), or, after a point that failed, the nearer of
 /// s = 0 and the last good point (PositionResult says what a failed point holds). Once the pieces
-/// have spent polyline_budget(method, n) evaluations, the remaining points are not integrated and
-/// carry status max_iterations. A κ(s) status other than ok flags its own point.
+/// have spent polyline_budget(method, n) evaluations (or `max_evaluations` when > 0), the
+/// remaining points are not integrated and carry status max_iterations. A κ(s) status other than
+/// ok flags its own point. `accept`: as for position_at, per point, relative to the arc length
+/// its running integral covers from s = 0 (detail::path_scale).
 template <QuadratureMethod M>
-std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method) {
+std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const M& method,
+                                     double accept = kDefaultAccept, long max_evaluations = 0) {
   method.validate();
+  validate_accept("quadratic polyline", accept);
   if (n < 2) throw_input_error("quadratic polyline", "points", n, "[2, inf)");
   c.check_s(s0, "s_from");
   c.check_s(s1, "s_to");
@@ -70,10 +138,12 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
     r.form = Form::s;
     ts[static_cast<size_t>(k)] = s;
   }
-  const detail::QuadraticSFormIntegrand f{&c};
+  const long budget = max_evaluations > 0 ? max_evaluations : polyline_budget(method, n);
   detail::AnchorState state;
-  detail::anchored_samples(out, ts, state, polyline_budget(method, n),
-                           [&](double a, double b) { return method.integrate(f, a, b); });
+  detail::anchored_samples(out, ts, state, budget, [&](double a, double b) {
+    return detail::integrate_quadratic(c, method, a, b, std::max(1L, budget - state.spent));
+  });
+  detail::grade_positions(out, accept);
   return out;
 }
 
@@ -86,12 +156,16 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
 /// s = 0, a pessimistic bound. Segments turning more than 0.25 rad or changing log κ by more than
 /// 0.05 are split (at most 1e4 pieces per grid step). InputError naming s_from / s_to where κ, ρ or
 /// θ leaves the double range on the way (docs/quadratic.md).
-std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n);
+/// `accept`: as for polyline.
+std::vector<PositionResult> hermite_polyline(const QuadraticLaCurve& c, double s0, double s1, int n,
+                                             double accept = kDefaultAccept);
 
 /// Run-time choice of the quadrature method (make_quadrature by name). InputError naming
 /// "integrator" for igf, a closed form of the planar LA curve in standard form only.
-PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method);
-std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method);
+PositionResult position_at(const QuadraticLaCurve& c, double s, const AnyQuadrature& method,
+                           double accept = kDefaultAccept, long max_evaluations = 0);
+std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, double s1, int n, const AnyQuadrature& method,
+                                     double accept = kDefaultAccept, long max_evaluations = 0);
 
 static_assert(PlanarCurveModel<QuadraticLaCurve, GaussKronrod>);
 

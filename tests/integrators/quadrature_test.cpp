@@ -50,7 +50,9 @@ TEST(Rk4Quadrature, ErrorEstimateTracksTrueError) {
       auto r = Rk4{.h = h}.integrate(f, 0.0, b);
       const double err = std::abs(r.value - exact);
       EXPECT_GE(r.error_estimate, err) << "h = " << h;
-      EXPECT_LE(r.error_estimate, 10 * err + 1e-15) << "h = " << h << ": estimate far too pessimistic";
+      // Step doubling without the factor 1/15, per pair in absolute value: about 15 times the
+      // error in the asymptotic regime, more where the pairs' differences change sign.
+      EXPECT_LE(r.error_estimate, 100 * err + 1e-15) << "h = " << h << ": estimate far too pessimistic";
     }
   }
 }
@@ -94,7 +96,7 @@ TEST(Rk4Quadrature, CumulativeSweepEqualsPerPieceCalls) {
     ASSERT_LE(cum[k].error_estimate, per_piece_estimate) << "k = " << k;
   }
   const std::complex<double> exact_end(std::sin(3 * ts.back()) / 3.0, std::exp(ts.back()) - 1.0);
-  EXPECT_LE(cum.back().error_estimate, 10 * std::abs(cum.back().value - exact_end));
+  EXPECT_LE(cum.back().error_estimate, 100 * std::abs(cum.back().value - exact_end));
 }
 
 // R6: default budgets bound the work of hopeless calls by evaluation count; the status says

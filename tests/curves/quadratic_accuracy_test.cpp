@@ -1,0 +1,117 @@
+// Quadratic LA curves: with every integrator, no position whose status is usable is wrong beyond
+// its accept bound (accept × |s|), checked against tests/reference/quadratic_positions.csv
+// (mpmath; generator beside it) and against the Tait–Kneser condition (a curve of monotone
+// curvature stays inside its osculating circle at s = 0 for s < 0, outside it for s > 0 before the
+// inflection: |C − i| ≤ 1 resp. ≥ 1 for the standard form, κ = 1 and tangent +x at s = 0).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "lac/common/accuracy.hpp"
+#include "lac/curves/quadratic/quadratic_position.hpp"
+#include "lac/integrators/registry.hpp"
+#include "tests/support/reference_csv.hpp"
+
+namespace lac {
+namespace {
+
+const char* const kMethods[] = {"rk4", "rk45", "gauss-kronrod", "gauss-legendre", "gk-tanh-sinh"};
+
+struct RefPoint {
+  double alpha, gamma, lambda, s;
+  std::complex<double> c;
+};
+
+// quadratic_positions.csv (sweep and the reproducer) and the position rows of quadratic.csv.
+std::vector<RefPoint> reference_points() {
+  std::vector<RefPoint> pts;
+  const auto t = test::read_reference_csv("quadratic_positions.csv");
+  for (size_t i = 0; i < t.rows.size(); ++i)
+    pts.push_back({t.number(i, "alpha"), t.number(i, "gamma"), t.number(i, "lambda"), t.number(i, "s"),
+                   {t.number(i, "x"), t.number(i, "y")}});
+  const auto q = test::read_reference_csv("quadratic.csv");
+  for (size_t i = 0; i < q.rows.size(); ++i)
+    if (q.rows[i][q.column("kind")] == "position")
+      pts.push_back({q.number(i, "alpha"), q.number(i, "gamma"), q.number(i, "lambda"), q.number(i, "x"),
+                     {q.number(i, "v1"), q.number(i, "v2")}});
+  return pts;
+}
+
+TEST(QuadraticAccuracy, UsablePositionsAgreeWithReference) {
+  const std::vector<RefPoint> pts = reference_points();
+  ASSERT_GE(pts.size(), 20u);
+  for (const char* name : kMethods) {
+    const AnyQuadrature method = make_quadrature(name);
+    int usable_count = 0, wrong = 0, above_estimate = 0;
+    for (const RefPoint& p : pts) {
+      const QuadraticLaCurve c(p.alpha, p.gamma, p.lambda);
+      const PositionResult r = position_at(c, p.s, method);
+      if (!usable(r.status)) continue;
+      ++usable_count;
+      const double err = std::abs(r.point.position - p.c);
+      const double slack = 1e-15 * std::abs(p.s);  // rounding of s to a double
+      if (err > r.error_estimate + slack) ++above_estimate;
+      if (err > kDefaultAccept * std::abs(p.s) + slack) {
+        ++wrong;
+        ADD_FAILURE() << name << " alpha=" << p.alpha << " gamma=" << p.gamma << " lambda=" << p.lambda
+                      << " s=" << p.s << ": usable (" << to_string(r.status) << ") with error " << err
+                      << ", estimate " << r.error_estimate;
+      }
+    }
+    std::printf("%-14s %zu reference points: usable %d, wrong beyond accept %d, error above estimate %d\n", name,
+                pts.size(), usable_count, wrong, above_estimate);
+  }
+}
+
+// The sweep (α ∈ [−3, 4], γ ∈ [−1, 1], Λ ∈ {0.3, 1, 3}) drawn with the CLI's default
+// range: no usable point outside (s < 0) resp. inside (s > 0, before the inflection) the
+// osculating circle at s = 0, beyond the point's error estimate.
+TEST(QuadraticAccuracy, UsablePolylinePointsKeepTaitKneser) {
+  for (const char* name : kMethods) {
+    const AnyQuadrature method = make_quadrature(name);
+    int points = 0, usable_count = 0, violations = 0;
+    // The whole grid takes minutes: set LAC_LONG_TESTS for it; by default a corner of it.
+    const bool full = std::getenv("LAC_LONG_TESTS") != nullptr;
+    const std::vector<double> alphas = full ? std::vector<double>{-3.0, -1.5, 0.0, 1.0, 2.5, 4.0} : std::vector<double>{-3.0};
+    const std::vector<double> gammas = full ? std::vector<double>{-1.0, -0.3, -0.01, 0.01, 0.3, 1.0} : std::vector<double>{-0.3, 0.3};
+    const std::vector<double> lambdas = full ? std::vector<double>{0.3, 1.0, 3.0} : std::vector<double>{1.0};
+    for (double alpha : alphas)
+      for (double gamma : gammas)
+        for (double lambda : lambdas) {
+          const QuadraticLaCurve c(alpha, gamma, lambda);
+          const Interval d = c.s_domain();
+          const double lo = std::isfinite(d.lo) ? 0.999 * d.lo : -2 / lambda;
+          const double hi = std::isfinite(d.hi) ? 0.999 * d.hi : 2 / lambda;
+          std::vector<PositionResult> pts;
+          try {
+            pts = polyline(c, std::max(lo, -50.0), std::min(hi, 50.0), 25, method);
+          } catch (const InputError&) {
+            continue;
+          }
+          for (const PositionResult& r : pts) {
+            ++points;
+            if (!usable(r.status)) continue;
+            ++usable_count;
+            const double dist = std::abs(r.point.position - std::complex<double>(0, 1));
+            const double slack = r.error_estimate + 1e-12 * (1 + std::abs(r.point.s));
+            const bool bad = r.point.s < 0 ? dist > 1 + slack : (r.point.s > 0 && dist < 1 - slack);
+            if (bad) {
+              ++violations;
+              ADD_FAILURE() << name << " alpha=" << alpha << " gamma=" << gamma << " lambda=" << lambda
+                            << " s=" << r.point.s << ": usable point at distance " << dist
+                            << " from the osculating circle's centre, estimate " << r.error_estimate;
+            }
+          }
+        }
+    std::printf("%-14s Tait-Kneser: %d points, %d usable, %d violations\n", name, points, usable_count, violations);
+  }
+}
+
+}  // namespace
+}  // namespace lac
