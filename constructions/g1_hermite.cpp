@@ -10,6 +10,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/constructions/detail/tangent_integral.hpp"
+#include "lac/constructions/detail/windings.hpp"
 #include "lac/constructions/s_curve.hpp"
 #include "lac/constructions/triangle_g1.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
@@ -1137,30 +1138,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   const double base = phi1 - phi0;  // Δ_0; Δ_k = base + 2πk
   const auto turning_of = [&](int k) { return base + 2 * kPi * k; };
 
-  // The windings to try: the given one, or every |Δ_k| ≤ max_turning, least first (on a tie the
-  // lesser |k|, then the left turn).
-  // At most 205 windings (|Δ| ≤ 200π): a fixed buffer, no allocation on the fast path.
-  struct Windings {
-    std::array<int, 208> k{};
-    size_t n = 0;
-    void push_back(int v) { k[n++] = v; }
-    int front() const { return k[0]; }
-    int* begin() { return k.data(); }
-    int* end() { return k.data() + n; }
-  } windings;
-  if (o.winding) {
-    windings.push_back(*o.winding);
-  } else {
-    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
-    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
-    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
-    for (int k = k_lo; k <= k_hi; ++k)
-      if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
-    std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
-      const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
-      return ta != tb ? ta < tb : std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : turning_of(a) > turning_of(b);
-    });
-  }
+  const detail::Windings windings = detail::windings_to_try(base, o.winding, o.max_turning);
   const int first = windings.front();
   res.info.phi0 = phi0;
   res.info.phi1 = phi1;
@@ -1229,6 +1207,13 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     sum = paper;
     sum.solver = solver;
     sum.integrator = integrator;
+    // A paper method proves "no curve" only within its family (001: no inflection; 004: 004's
+    // S-family); a G1 curve of another shape may exist, so for the G1 problem it is no proof.
+    if (paper.status == Status::no_solution)
+      sum.message = "g1: the '" + solver + "' method found no curve in its family (" +
+                    (o.solver == "triangle" ? "001's, without inflection" : "004's S-curves") +
+                    "), which is no proof for every G1 curve ('auto' searches every shape): " + sum.message,
+      sum.status = Status::not_converged;
     if (paper.usable()) {
       res.curve = curve;
       res.info.length = curve.length();

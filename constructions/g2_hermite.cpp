@@ -12,6 +12,7 @@
 #include "lac/common/error.hpp"
 #include "lac/common/numeric.hpp"
 #include "lac/constructions/detail/g2_system.hpp"
+#include "lac/constructions/detail/windings.hpp"
 #include "lac/solvers/detail/method_registry.hpp"
 
 namespace lac {
@@ -281,20 +282,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
                   "no curve of any winding: for alpha >= 0 an LA segment's curvature never vanishes nor changes sign, "
                   "so kappa0 and kappa1 must be nonzero with equal signs");
   }
-  std::vector<int> windings;
-  if (o.winding) {
-    windings.push_back(*o.winding);
-  } else {
-    // |base + 2πk| ≤ max_turning ≤ 200π, |base| < 2π: k within [−101, 101].
-    const int k_lo = std::max(-101, static_cast<int>(std::ceil((-o.max_turning - base) / (2 * kPi)))) - 1;
-    const int k_hi = std::min(101, static_cast<int>(std::floor((o.max_turning - base) / (2 * kPi)))) + 1;
-    for (int k = k_lo; k <= k_hi; ++k)
-      if (std::abs(turning_of(k)) <= o.max_turning) windings.push_back(k);
-    std::stable_sort(windings.begin(), windings.end(), [&](int a, int b) {
-      const double ta = std::abs(turning_of(a)), tb = std::abs(turning_of(b));
-      return ta != tb ? ta < tb : std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : turning_of(a) > turning_of(b);
-    });
-  }
+  const detail::Windings windings = detail::windings_to_try(base, o.winding, o.max_turning);
   res.info.winding = windings.front();
   res.info.turning = turning_of(windings.front());
   res.info.max_turning = o.winding ? 0.0 : o.max_turning;
