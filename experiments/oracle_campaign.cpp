@@ -65,6 +65,10 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "TBB threads")->check(CLI::Range(1, 256));
   app.add_option("--out", out, "folder of the result tables");
   app.add_flag("!--no-write", write, "print the table only");
+  std::string findings_file;
+  std::vector<std::string> counts;
+  app.add_option("--counts", counts, "per-construction counts NAME=N (override --count for those named)");
+  app.add_option("--findings-file", findings_file, "write every finding (construction, index, kind, input) to this file");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<std::string> names;
@@ -82,7 +86,10 @@ int main(int argc, char** argv) {
   bool bad = false;
   for (const auto& name : names) {
     const auto t0 = std::chrono::steady_clock::now();
-    const oracle::Tally tally = oracle::run_campaign(name, first, count, seed);
+    long n = count;
+    for (const std::string& c : counts)
+      if (c.rfind(name + "=", 0) == 0) n = std::stol(c.substr(name.size() + 1));
+    const oracle::Tally tally = oracle::run_campaign(name, first, n, seed);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::string others;
     for (const auto& [k, n] : tally.statuses) others += (others.empty() ? "" : ", ") + k + " " + std::to_string(n);
@@ -91,10 +98,14 @@ int main(int argc, char** argv) {
                std::to_string(tally.false_no_curve), std::to_string(tally.other_winding), std::to_string(tally.input_error),
                others.empty() ? "0" : others, std::to_string(tally.exceptions), io::sci(tally.worst, 2)};
     t.add_row(row);
-    for (const std::string& v : {io::fmt(sec, 3), io::fmt(static_cast<double>(count) / sec, 3),
-                                 io::fmt(1e6 * sec * threads / static_cast<double>(count), 3)})
+    for (const std::string& v : {io::fmt(sec, 3), io::fmt(static_cast<double>(n) / sec, 3),
+                                 io::fmt(1e6 * sec * threads / static_cast<double>(n), 3)})
       row.push_back(v);
     full.add_row(row);
+    if (!findings_file.empty()) {
+      std::ofstream ff(findings_file, std::ios::app);
+      for (const auto& e : tally.all) ff << name << "\t" << seed << "\t" << e.index << "\t" << e.text << "\n";
+    }
     bad = bad || tally.wrong > 0 || tally.false_no_curve > 0 || tally.exceptions > 0;
     std::cerr << name << ": " << tally.problems << " problems, " << tally.usable << " usable, " << tally.wrong
               << " wrong, " << tally.unverified << " unverified, " << tally.no_solution << " no_solution, "

@@ -84,6 +84,7 @@ struct Tally {
   double worst = 0;  ///< largest verified error / accept
   std::map<std::string, long> statuses;
   std::vector<Example> wrong_examples, false_examples, unverified_examples, exception_examples, other_winding_examples;
+  std::vector<Example> all;  ///< every wrong, false no-curve and exception, "kind: detail", by index
 
   static void keep(std::vector<Example>& v, Example e) {
     v.push_back(std::move(e));
@@ -103,6 +104,10 @@ struct Tally {
       case Outcome::exception: ++exceptions; keep(exception_examples, {index, r.detail}); break;
     }
     if (r.outcome == Outcome::wrong_but_usable && r.silent) ++silent;
+    if (r.outcome == Outcome::wrong_but_usable || r.outcome == Outcome::false_no_curve || r.outcome == Outcome::exception)
+      all.push_back({index, std::string(r.outcome == Outcome::wrong_but_usable ? (r.silent ? "wrong (silent)" : "wrong")
+                                        : r.outcome == Outcome::false_no_curve ? "false_no_curve" : "exception") +
+                                ": " + r.detail});
     if (r.curve_at_other_winding) {
       ++other_winding;
       keep(other_winding_examples, {index, r.detail});
@@ -115,6 +120,8 @@ struct Tally {
     other += o.other, exceptions += o.exceptions, other_winding += o.other_winding, silent += o.silent;
     worst = std::max(worst, o.worst);
     for (const auto& [k, n] : o.statuses) statuses[k] += n;
+    all.insert(all.end(), o.all.begin(), o.all.end());
+    std::sort(all.begin(), all.end(), [](const Example& a, const Example& b) { return a.index < b.index; });
     for (const auto& e : o.wrong_examples) keep(wrong_examples, e);
     for (const auto& e : o.false_examples) keep(false_examples, e);
     for (const auto& e : o.unverified_examples) keep(unverified_examples, e);
