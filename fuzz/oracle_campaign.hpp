@@ -733,6 +733,9 @@ inline Record run_eval(Rng& rng) {
     std::optional<R> s = by_theta ? standard_s_at_theta(alpha, lambda, t) : std::optional<R>(t);
     if (!s) return {Outcome::unverified, 0, "", input + " | oracle: s(theta) not found", false};
     const SegL seg = standard_form(alpha, lambda, *s);
+    // The inversion must reproduce θ (Newton from F⁻¹ can fail where F is nearly flat, α → 1).
+    if (by_theta && !(std::fabs(seg.phi_at(*s) - R(t)) <= 1e-13L * (1 + std::fabs(R(t)))))
+      return {Outcome::unverified, 0, "", input + " | oracle: s(theta) inversion not accurate", false};
     const IntegralL I = integrate_tangent(seg, 0, *s);
     if (!I.ok) return {Outcome::unverified, 0, "", input + " | oracle: " + I.why, false};
     return position_grade(p, I.value, seg.phi_at(*s), seg.law.K(seg.qb), *s, input);
