@@ -225,7 +225,16 @@ with open(os.path.join(out, "robustness.csv"), "w", newline="") as f:
     w = csv.writer(f)
     w.writerow(cols)
     w.writerows(rows)
-with open(os.path.join(out, "robustness.md"), "w") as f:
+# The oracle section (written by exp_oracle_campaign between its markers) is kept as it is.
+oracle_section = ""
+md_path = os.path.join(out, "robustness.md")
+if os.path.exists(md_path):
+    old = open(md_path).read()
+    a = old.find("<!-- oracle campaign: begin")
+    b = old.find("<!-- oracle campaign: end -->")
+    if a >= 0 and b > a:
+        oracle_section = old[a:b + len("<!-- oracle campaign: end -->")] + "\n"
+with open(md_path, "w") as f:
     f.write("# Robustness: libFuzzer targets\n\n")
     f.write(f"Written by `{command}` — do not edit by hand; rerun the command.\n\n")
     f.write(f"Machine: {machine}. Executions and seconds are this machine's; they vary from run to run.\n\n")
@@ -257,6 +266,8 @@ with open(os.path.join(out, "robustness.md"), "w") as f:
         missing += [t for t in named if t not in tests]
         r = r[:-1] + [", ".join(f"`{t}`" if t in tests else f"`{t}` (MISSING)" for t in named)]
         f.write("| " + " | ".join(c.replace("|", "/") for c in r) + " |\n")
+    if oracle_section:
+        f.write("\n" + oracle_section)
 if missing:
     sys.exit("fuzz.sh: fuzz/fixes.tsv names regression tests that do not exist: " + " ".join(missing))
 PY
