@@ -573,7 +573,15 @@ Complex power_limit_integral(double delta, double p, long& evaluations) {
 // α = −1: the small-angle solution A = 3(φ0 + φ1) of Im∫e^{iφ} ≈ ∫φ = 0 [Bertolazzi–Frego 2015].
 double clothoid_guess(double phi0, double delta) { return 3 * (2 * phi0 + delta); }
 // α ≠ 0: the clothoid's guess moved to the law by matching the ratio of the end curvatures.
+double exponential_guess(double phi0, double delta);
 double power_guess(double alpha, double phi0, double delta) {
+  if (alpha < 0 && alpha > -kSmallAlpha && delta != 0) {
+    // Small |α|: the α = 0 guess b0 = log(κb/κa) carried over, X = log(qb/qa) = −α·b0 and
+    // a = Δ·tanh(X/2) (qb/qa = (Δ + a)/(Δ − a)): inside |a| < |Δ|, where near_zero evaluates.
+    // (The clothoid's end-curvature ratio is ill-conditioned there: |k|^(−α) ≈ 1.)
+    const double b0 = std::clamp(exponential_guess(phi0, delta), -12.0, 12.0);
+    return delta * std::tanh(-0.5 * alpha * b0);
+  }
   const double A = clothoid_guess(phi0, delta);
   if (alpha == -1) return A;
   const double ka = delta - A, kb = delta + A;
