@@ -440,6 +440,7 @@ struct Normalized {
     // panels of width ≤ 1/|p| in w (φ' within a factor e on each), 12, 16 or 20 nodes for
     // ω = (width/2)·hypot(1, max|φ'|) up to 4, 8, 12. The split is held fixed in x, so the derivative
     // of the sum is exact; r < 1e-18 (u-width below 1e-18) is left out.
+    bool too_steep = false;
     auto log_piece = [&](Dual d, Dual rB, Dual qB, double phiB) {
       if (!(rB.v > 1e-18)) return;  // a piece narrower than 1e-18 in u
       const Dual two_c = 2.0 * c;
@@ -465,7 +466,12 @@ struct Normalized {
       const Dual q_lo = p > 0 ? split : w0, q_hi = p > 0 ? Dual{0, 0} : split;
       const Dual span = q_hi - q_lo;
       if (span.v > 0) {
-        const int panels = std::max(1, static_cast<int>(std::ceil(span.v * std::abs(p))));
+        const double want = std::ceil(span.v * std::abs(p));
+        if (!(want <= 4096)) {  // |p| ~ 1/|α| huge (0 < −α ≪ 1 with an inflection): not evaluated, never a hang
+          too_steep = true;
+          return;
+        }
+        const int panels = std::max(1, static_cast<int>(want));
         for (int i = 0; i < panels; ++i) {
           const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
           const double wa = q_lo.v + ta * span.v, wb = q_lo.v + tb * span.v;
@@ -539,7 +545,7 @@ struct Normalized {
         add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
       });
     }
-    return true;
+    return !too_steep;
   }
 };
 
@@ -574,7 +580,15 @@ Complex power_limit_integral(double delta, double p, long& evaluations) {
 // α = −1: the small-angle solution A = 3(φ0 + φ1) of Im∫e^{iφ} ≈ ∫φ = 0 [Bertolazzi–Frego 2015].
 double clothoid_guess(double phi0, double delta) { return 3 * (2 * phi0 + delta); }
 // α ≠ 0: the clothoid's guess moved to the law by matching the ratio of the end curvatures.
+double exponential_guess(double phi0, double delta);
 double power_guess(double alpha, double phi0, double delta) {
+  if (alpha < 0 && alpha > -kSmallAlpha && delta != 0) {
+    // Small |α|: the α = 0 guess b0 = log(κb/κa) carried over, X = log(qb/qa) = −α·b0 and
+    // a = Δ·tanh(X/2) (qb/qa = (Δ + a)/(Δ − a)): inside |a| < |Δ|, where near_zero evaluates.
+    // (The clothoid's end-curvature ratio is ill-conditioned there: |k|^(−α) ≈ 1.)
+    const double b0 = std::clamp(exponential_guess(phi0, delta), -12.0, 12.0);
+    return delta * std::tanh(-0.5 * alpha * b0);
+  }
   const double A = clothoid_guess(phi0, delta);
   if (alpha == -1) return A;
   const double ka = delta - A, kb = delta + A;
