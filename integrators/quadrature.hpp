@@ -191,18 +191,21 @@ class Rk4Sweep {
   /// when f's components are monotone over the pair.
   /// "Its size": the largest |f| met so far in the sweep (not the pair's own, which is small where a
   /// real integrand crosses zero).
-  double unresolved_term(double width, const V& f0, const V& f1, const V& f2) {
+  /// A pair counts as unresolved only when its step-doubling difference d is also not negligible
+  /// against width · spread (|d| > 1e-3 |width| spread; a resolved pair has |d| ~ width^5 f'''').
+  double unresolved_term(double width, const V& f0, const V& f1, const V& f2, double d) {
     const double spread = std::max({magnitude_bound(f1 - f0), magnitude_bound(f2 - f1), magnitude_bound(f2 - f0)});
     size_ = std::max({size_, magnitude_bound(f0), magnitude_bound(f1), magnitude_bound(f2)});
-    return spread > 0.25 * size_ ? std::abs(width) * spread : 0.0;
+    return spread > 0.25 * size_ && d > 1e-3 * std::abs(width) * spread ? std::abs(width) * spread : 0.0;
   }
 
   void add_difference(const V& d) { abs_diff_ += std::abs(d); }
 
   void pair(double w, const V& simpson, const V& f_right) {
     if (have_pending_ && w == pending_w_) {  // equal steps (one call): Simpson with step 2w
-      unresolved_ += unresolved_term(2 * w, f_pair_left_, f_left_, f_right);
-      add_difference(pending_simpson_ + simpson - (w / 3.0) * (f_pair_left_ + 4.0 * f_left_ + f_right));
+      const V d = pending_simpson_ + simpson - (w / 3.0) * (f_pair_left_ + 4.0 * f_left_ + f_right);
+      unresolved_ += unresolved_term(2 * w, f_pair_left_, f_left_, f_right, std::abs(d));
+      add_difference(d);
       paired_ += 2;
       have_pending_ = false;
       return;
@@ -211,12 +214,13 @@ class Rk4Sweep {
     if (have_pending_ && ratio >= 0.5 && ratio <= 2.0) {
       const double w1 = pending_w_, sum = w1 + w;  // nodes a, a + w1, a + w1 + w: exact for quadratics
       const V coarse = (sum / 6.0) * ((2.0 - w / w1) * f_pair_left_ + (sum * sum / (w1 * w)) * f_left_ + (2.0 - w1 / w) * f_right);
-      unresolved_ += unresolved_term(sum, f_pair_left_, f_left_, f_right);
+      unresolved_ += unresolved_term(sum, f_pair_left_, f_left_, f_right, std::abs(pending_simpson_ + simpson - coarse));
       add_difference(pending_simpson_ + simpson - coarse);
       paired_ += 2;
       have_pending_ = false;
     } else {
-      if (have_pending_) unresolved_ += unresolved_term(pending_w_, f_pair_left_, f_left_, f_left_);  // left unpaired
+      if (have_pending_)  // left unpaired: no difference of its own, judged by its spread alone
+        unresolved_ += unresolved_term(pending_w_, f_pair_left_, f_left_, f_left_, std::numeric_limits<double>::infinity());
       have_pending_ = true;
       pending_w_ = w;
       pending_simpson_ = simpson;
