@@ -88,7 +88,7 @@ TEST(CliPositionAccuracy, EvalRk4EstimateBoundsItsError) {
 }
 
 TEST(CliPositionAccuracy, EvalSamplesAreUniformInArcLength) {
-  const auto j = test::run_lac_json("eval --alpha -1 --lambda 1 --theta 1.2 --samples 5");
+  const auto j = test::run_lac_json("eval --alpha -1 --lambda 1 --theta 0.4 --samples 5");
   ASSERT_EQ(j["points"].size(), 5u);
   const double s_end = j["point"]["s"].get<double>();
   for (int k = 0; k < 5; ++k)
