@@ -93,7 +93,10 @@ Report solve(const QuadraticArgs& a) {
   // error: the largest relative error over the printed points (estimate / arc length integrated over).
   double error = detail::relative_error(start);
   for (size_t k = 0; k < pts.size(); ++k) error = std::max(error, pts[k].error_estimate / detail::path_scale(pts, k));
-  Report r{evaluation_report(failed ? failed->status : Status::ok, failed ? failed->message : "", evaluations, seconds,
+  std::string message = failed ? failed->message : "";
+  if (failed && failed->status == Status::max_iterations && message.find("evaluation budget") != std::string::npos)
+    message += " (--max-evaluations, [1, 1e10])";
+  Report r{evaluation_report(failed ? failed->status : Status::ok, message, evaluations, seconds,
                              describe(method), error, accept),
            {}};
   Json& j = r.json;
