@@ -153,6 +153,11 @@ LaCurve segment1_curve(const Problem& p, const StandardCurve& f) {
   return LaCurve(p.alpha1, f.lambda0 * std::exp((1.0 - p.alpha0) * f.log_rho_joint));
 }
 
+/// Trial positions are graded only against the loosest accept bound: the search needs their values
+/// and estimates (summed into the trial's error), and the result is graded against the options'
+/// accept by its summary.error.
+constexpr double kTrialAccept = kMaxAccept;
+
 template <class M>
 Trial draw(const Problem& p, double lambda0, const M& method) {
   Trial t;
@@ -162,7 +167,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     const LaCurve c0(p.alpha0, lambda0);
     double joint_tangent = 0;
     if (!p.configuration_b) {  // 001 Fig. 5(a): segment 0 from θ = 0 to θ0
-      const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method);
+      const PositionResult r0 = position_at(c0, Parameter::theta, p.theta0, method, Form::automatic, kTrialAccept);
       t.evaluations += r0.evaluations;
       t.error += r0.error_estimate;
       t.status = r0.status;
@@ -171,7 +176,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
       f.log_rho_joint = c0.log_rho_at_theta(p.theta0);
       joint_tangent = p.theta0;
     } else {  // 001 Fig. 5(b): segment 0 from θ = −θ0 to 0, ρ = 1 at the joint
-      const PositionResult r0 = position_at(c0, Parameter::theta, -p.theta0, method);
+      const PositionResult r0 = position_at(c0, Parameter::theta, -p.theta0, method, Form::automatic, kTrialAccept);
       t.evaluations += r0.evaluations;
       t.error += r0.error_estimate;
       t.status = r0.status;
@@ -181,7 +186,7 @@ Trial draw(const Problem& p, double lambda0, const M& method) {
     }
     f.end = f.joint;
     if (p.theta1 > 0) {
-      const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method);
+      const PositionResult r1 = position_at(segment1_curve(p, f), Parameter::theta, p.theta1, method, Form::automatic, kTrialAccept);
       t.evaluations += r1.evaluations;
       t.error += std::exp(f.log_rho_joint) * r1.error_estimate;
       if (r1.status != Status::ok && t.status == Status::ok) {
@@ -238,7 +243,7 @@ Limit start_angle_limit(const Problem& p) {
     return {factor * (rho_zero_start ? r.value : std::polar(1.0, T) * std::conj(r.value)), factor * r.error_estimate};
   };
   auto regular = [&](const LaCurve& curve, double theta) -> Part {
-    const PositionResult r = position_at(curve, Parameter::theta, theta, method);
+    const PositionResult r = position_at(curve, Parameter::theta, theta, method, Form::automatic, kTrialAccept);
     add(r);
     return {r.point.position, r.error_estimate};
   };

@@ -141,7 +141,9 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
   const long budget = max_evaluations > 0 ? max_evaluations : polyline_budget(method, n);
   detail::AnchorState state;
   detail::anchored_samples(out, ts, state, budget, [&](double a, double b) {
-    return detail::integrate_quadratic(c, method, a, b, std::max(1L, budget - state.spent));
+    // A piece may spend half of what is left: one point that cannot be resolved (its turning too
+    // large for the budget) leaves the other points their share.
+    return detail::integrate_quadratic(c, method, a, b, std::max(1L, (budget - state.spent) / 2));
   });
   detail::grade_positions(out, accept);
   return out;
