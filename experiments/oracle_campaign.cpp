@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
 
   io::Table t, full;
   t.columns = {"construction", "problems", "usable", "verified", "wrong_but_usable", "silent_wrong", "unverified", "no_solution",
-               "false_no_curve", "curve_at_other_winding", "input_error", "other_statuses", "exceptions",
+               "false_no_curve", "no_curve_by_scan", "curve_at_other_winding", "input_error", "other_statuses", "exceptions",
                "worst_error_over_accept"};
   full.columns = t.columns;
   for (const char* c : {"seconds", "problems_per_second", "us_per_problem_per_thread"}) full.columns.emplace_back(c);
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     for (const auto& [k, n] : tally.statuses) others += (others.empty() ? "" : ", ") + k + " " + std::to_string(n);
     std::vector<std::string> row{name, std::to_string(tally.problems), std::to_string(tally.usable), std::to_string(tally.verified),
                std::to_string(tally.wrong), std::to_string(tally.silent), std::to_string(tally.unverified), std::to_string(tally.no_solution),
-               std::to_string(tally.false_no_curve), std::to_string(tally.other_winding), std::to_string(tally.input_error),
+               std::to_string(tally.false_no_curve), std::to_string(tally.by_scan), std::to_string(tally.other_winding), std::to_string(tally.input_error),
                others.empty() ? "0" : others, std::to_string(tally.exceptions), io::sci(tally.worst, 2)};
     t.add_row(row);
     for (const std::string& v : {io::fmt(sec, 3), io::fmt(static_cast<double>(n) / sec, 3),
@@ -140,6 +140,10 @@ int main(int argc, char** argv) {
       "error estimate) was within accept too, or unset: nothing in the result tells that it is wrong. A no_solution is *false* when the proof's condition (recomputed) does not hold for every winding of "
       "the scope its message states, or when the solver itself verifies a curve inside that scope "
       "(docs/robustness.md). `unverified`: usable results the oracle could not evaluate (no verdict); "
+      "`no_curve_by_scan`: G1 no_solution resting at some winding on the solver's certified scan of the "
+      "alpha >= 0 shapes (docs/g1_hermite.md), which the oracle does not re-derive; each was tried by the auto, "
+      "toms748 and bisection solvers at that winding and none verified a curve (its claim is tested against "
+      "tanh-sinh end points by G1Hermite.SearchUpToMaxTurningStatesItsScope); "
       "`curve_at_other_winding`: no_solution whose data have a verified curve at a winding in −2…2 outside the "
       "message's scope (information, not a failure). Both `wrong_but_usable` and `false_no_curve` must be 0.";
   doc.notes = findings.empty() ? "No finding." : "### Findings\n" + findings;

@@ -253,6 +253,21 @@ inline PlacedSegL read_segment(const LaSegment& s) {
   p.seg.ub = s.ub();
   p.seg.qa = s.qa();
   p.seg.qb = s.qb();
+  if (s.law().offset) {
+    // The offset (Box–Cox) form stores q = (t − 1)/(−α), t the plain form's q / σ (la_law.hpp):
+    // converted here to the plain form in long double (log|κ| then good to ε_ld/|α|); below
+    // |α| = 1e-9 to the α = 0 law in log|κ| = q log1p(−αq)/(−αq) (the law differs by O(|α|)).
+    const R a = s.law().alpha, sg = s.law().sigma;
+    if (std::fabs(a) >= 1e-9L) {
+      p.seg.qa = sg * (1 - a * static_cast<R>(s.qa()));
+      p.seg.qb = sg * (1 - a * static_cast<R>(s.qb()));
+    } else {
+      auto log_kappa = [&](R q) { const R z = -a * q; return z == 0 ? q : q * std::log1p(z) / z; };
+      p.seg.law = {0, sg};
+      p.seg.qa = log_kappa(s.qa());
+      p.seg.qb = log_kappa(s.qb());
+    }
+  }
   p.seg.phia = s.phi_a();
   p.start = CR(s.start().real(), s.start().imag());
   p.scale = s.scale();

@@ -134,7 +134,10 @@ TEST(G1Hermite, EveryAlphaVerifiedByTanhSinh) {
         }
       } else {
         ++failed;
-        EXPECT_NE(r.summary.message.find("e^700"), std::string::npos) << what << ": " << r.summary.message;
+        // The root needs an end-curvature ratio beyond double precision: the message says so.
+        EXPECT_TRUE(r.summary.message.find("e^700") != std::string::npos ||
+                    r.summary.message.find("no double-precision evaluation") != std::string::npos)
+            << what << ": " << r.summary.message;
       }
     }
     const int total = solved + refused + failed;

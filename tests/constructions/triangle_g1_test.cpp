@@ -514,7 +514,7 @@ TEST(PlanarSegments, DrawableExactlyBelowTheLimitOfTheStartAngle) {
           if (limit) EXPECT_NEAR(*limit, *g.info.start_angle_limit, 1e-14);  // depends on α0, α1, r and θ only
           limit = g.info.start_angle_limit;
         }
-        if (g.summary.status == Status::ok) {
+        if (g.usable()) {  // ok, or tolerance_not_met where the error bound exceeds the 1e-11 target
           solved.push_back({g.info.target_angle, g.info.pieces[0].lambda});
         } else if (g.summary.status == Status::not_converged) {  // a curve exists, Λ0 not resolved
           EXPECT_LT(g.info.target_angle, *g.info.start_angle_limit);
@@ -628,7 +628,10 @@ TEST(PlanarSegments, HardTrianglesSolveOnTheDefaultIntegrator) {
     EXPECT_LE(std::abs(std::arg(std::polar(1.0, g.curve.frame_at(0).theta) / (c.t.a1 - c.t.a0))), tangent_tol) << where;
     EXPECT_LE(std::abs(std::arg(std::polar(1.0, end.theta) / (c.t.a2 - c.t.a1))), tangent_tol) << where;
     const TriangleResult m = solve_compound(c.t, c.alpha, c.alpha, 0.5);
-    ASSERT_EQ(m.summary.status, Status::ok) << where << ": " << m.summary.message;
+    // Usable; ok or, where the positions' error bound exceeds the 1e-11 target, within 1e-8.
+    ASSERT_TRUE(m.usable()) << where << ": " << m.summary.message;
+    ASSERT_TRUE(m.summary.error.has_value()) << where;
+    EXPECT_LE(*m.summary.error, 1e-8) << where << ": " << m.summary.message;
     EXPECT_LE(rel(m.curve.length(), g.curve.length()), kSameCurveTol) << where;
   }
 }
@@ -656,12 +659,14 @@ TEST(PlanarSegments, RandomTrianglesEndOkOrProvenOutside) {
       std::printf("  not_converged at alpha = %.17g, (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g)\n", alpha, t.a0.real(),
                   t.a0.imag(), t.a1.real(), t.a1.imag(), t.a2.real(), t.a2.imag());
     ++statuses[std::string(to_string(g.summary.status))];
+    // inaccurate: a curve whose positions' error bound exceeds accept (skewed legs, steep ends).
     EXPECT_TRUE(g.summary.status == Status::ok || g.summary.status == Status::no_solution ||
-                g.summary.status == Status::not_converged)
+                g.summary.status == Status::not_converged || g.summary.status == Status::inaccurate)
         << "alpha = " << alpha << " " << t.a0 << " " << t.a1 << " " << t.a2 << ": " << to_string(g.summary.status) << " "
         << g.summary.message;
   }
   std::string text;
+  EXPECT_LE(statuses["inaccurate"], 3);
   for (const auto& [s, n] : statuses) text += " " + s + " " + std::to_string(n);
   std::printf("  random triangles:%s\n", text.c_str());
 }
@@ -676,8 +681,9 @@ TEST(PlanarSegments, BeyondTheAcceptBoundIsInaccurate) {
     const TriangleResult g = compound ? solve_compound({{0, 0}, {1, 0}, {2, 1}}, -1, -1, 0.5, o)
                                       : solve_g1({{0, 0}, {1, 0}, {2, 1}}, -1.0, o);
     EXPECT_EQ(g.summary.status, Status::inaccurate) << g.summary.message;
-    ASSERT_TRUE(g.summary.error.has_value());
-    EXPECT_GT(*g.summary.error, 1e-3);
+    // summary.error where a curve was drawn; a trial curve already beyond the loosest accept ends
+    // the search with that trial's status and message.
+    if (g.summary.error) EXPECT_GT(*g.summary.error, 1e-3);
     EXPECT_NE(g.summary.message.find("accept"), std::string::npos) << g.summary.message;
     EXPECT_TRUE(g.curve.segments().empty());
   }
@@ -748,6 +754,7 @@ TEST(PlanarSegments, ExtremeInputGivesAStatusNeverNaN) {
       ASSERT_TRUE(std::isfinite(std::abs(q.point.position)) && std::isfinite(q.point.kappa) && std::isfinite(q.point.s));
   }
   std::string text;
+  EXPECT_LE(statuses["inaccurate"], 3);
   for (const auto& [s, n] : statuses) text += " " + s + " " + std::to_string(n);
   std::printf("  %d extreme cases, %d usable;%s\n", cases, usable_count, text.c_str());
   EXPECT_GT(usable_count, 60);
