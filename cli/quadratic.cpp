@@ -21,55 +21,15 @@ struct QuadraticArgs {
   std::optional<double> max_evaluations;
 };
 
-// The default drawing range: from s = 0 toward each end until the first of
-//   |θ| = kDefaultTurning (total turning at most 2·kDefaultTurning),
-//   κ = e^(±kDefaultLogKappa) (curvature within a factor 1e3 of κ(0) = 1),
-//   99.9 % of a finite bound of the domain.
-// Both curvature and angle are monotone in u = log κ on the base curve, so the end is found in u by
-// bisection on the closed forms s(u), θ(u) (docs/quadratic.md). With --through-inflection and a
-// finite inflection s_i the upper end is the point-symmetric image 2 s_i − (lower end).
-constexpr double kDefaultTurning = 2 * 3.14159265358979323846;  // rad on each side of s = 0
-constexpr double kDefaultLogKappa = 6.907755278982137;           // ln 1e3
-
-double default_end(const QuadraticLaCurve& c, double direction) {
-  // direction −1: toward κ → ∞ (u > 0, s < 0); +1: toward κ → 0 (u < 0, s > 0).
-  auto acceptable = [&](double u) {
-    try {
-      const double s = c.s_at_log_kappa(u), theta = c.theta_at_log_kappa(u);
-      return std::isfinite(s) && std::isfinite(theta) && std::abs(theta) <= kDefaultTurning;
-    } catch (const InputError&) {
-      return false;
-    }
-  };
-  const double u_far = -direction * kDefaultLogKappa;
-  double u;
-  if (acceptable(u_far)) {
-    u = u_far;
-  } else {
-    double good = 0.0, bad = u_far;  // acceptable(0): s = θ = 0
-    for (int i = 0; i < 200 && std::abs(bad - good) > 1e-12 * std::max(1.0, std::abs(good)); ++i) {
-      const double mid = 0.5 * (good + bad);
-      (acceptable(mid) ? good : bad) = mid;
-    }
-    u = good;
-  }
-  const double s = c.s_at_log_kappa(u);
-  const double bound = direction < 0 ? c.s_at_infinite_kappa() : c.s_at_zero_kappa();
-  return std::isfinite(bound) && std::abs(s) > 0.999 * std::abs(bound) ? 0.999 * bound : s;
-}
-
 Report solve(const QuadraticArgs& a) {
   QuadraticOptions options;
   options.inverse = special::parse_erf_inverse_method(a.inverse);
   options.through_inflection = a.through_inflection;
   const double lambda = need(a.lambda, "lambda");
   const QuadraticLaCurve curve(need(a.alpha, "alpha"), need(a.gamma, "gamma"), lambda, options);
-  const double lower = default_end(curve, -1.0);
-  const double upper = a.through_inflection && curve.has_inflection()
-                           ? 2.0 * curve.s_at_zero_kappa() - lower
-                           : default_end(curve, 1.0);
-  const double s0 = a.s_from.value_or(lower);
-  const double s1 = a.s_to.value_or(upper);
+  const Interval range = curve.default_range();  // docs/quadratic.md
+  const double s0 = a.s_from.value_or(range.lo);
+  const double s1 = a.s_to.value_or(range.hi);
   curve.check_s(s0, "s-from");
   curve.check_s(s1, "s-to");
   long max_evaluations = 0;

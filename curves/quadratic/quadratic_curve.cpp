@@ -1,5 +1,6 @@
 #include "lac/curves/quadratic/quadratic_curve.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -162,6 +163,49 @@ CurvePoint QuadraticLaCurve::frame_at(double s, KappaSolution* solution) const {
   // tangent is even, θ(s_i + t) = θ(s_i − t), and κ = θ' is odd.
   p.theta = theta_of(s, k, false);  // a failed solve is flagged by k.status
   return p;
+}
+
+namespace {
+
+constexpr double kDefaultTurning = 2 * 3.14159265358979323846;  // rad on each side of s = 0
+constexpr double kDefaultLogKappa = 6.907755278982137;           // ln 1e3
+
+// Both curvature and angle are monotone in u = log κ on the base curve, so the end is found in u by
+// bisection on the closed forms s(u), θ(u). direction −1: toward κ → ∞ (u > 0, s < 0); +1: toward
+// κ → 0 (u < 0, s > 0).
+double default_end(const QuadraticLaCurve& c, double direction) {
+  auto acceptable = [&](double u) {
+    try {
+      const double s = c.s_at_log_kappa(u), theta = c.theta_at_log_kappa(u);
+      return std::isfinite(s) && std::isfinite(theta) && std::abs(theta) <= kDefaultTurning;
+    } catch (const InputError&) {
+      return false;
+    }
+  };
+  const double u_far = -direction * kDefaultLogKappa;
+  double u;
+  if (acceptable(u_far)) {
+    u = u_far;
+  } else {
+    double good = 0.0, bad = u_far;  // acceptable(0): s = θ = 0
+    for (int i = 0; i < 200 && std::abs(bad - good) > 1e-12 * std::max(1.0, std::abs(good)); ++i) {
+      const double mid = 0.5 * (good + bad);
+      (acceptable(mid) ? good : bad) = mid;
+    }
+    u = good;
+  }
+  const double s = c.s_at_log_kappa(u);
+  const double bound = direction < 0 ? c.s_at_infinite_kappa() : c.s_at_zero_kappa();
+  return std::isfinite(bound) && std::abs(s) > 0.999 * std::abs(bound) ? 0.999 * bound : s;
+}
+
+}  // namespace
+
+Interval QuadraticLaCurve::default_range() const {
+  const double lower = default_end(*this, -1.0);
+  const double upper =
+      options_.through_inflection && has_inflection() ? 2.0 * s_at_zero_kappa() - lower : default_end(*this, 1.0);
+  return {lower, upper, true, true};
 }
 
 }  // namespace lac

@@ -110,6 +110,12 @@ class QuadraticLaCurve {
   /// allowed when through_inflection is on).
   void check_s(double s, const char* name) const;
 
+  /// The default drawing range (docs/quadratic.md): from s = 0 toward each end until the first of
+  /// |θ| = 2π, κ = e^(±ln 1e3) (curvature within a factor 1e3 of κ(0) = 1), or 99.9 % of a finite
+  /// bound of the domain; with through_inflection and an inflection, the upper end is the
+  /// point-symmetric image of the lower one. `lac quadratic` and the Python module draw this range.
+  Interval default_range() const;
+
  private:
   double mirrored_s(double s) const;  // s past the inflection → its mirror image below s(κ→0)
   KappaSolution finish(double s, const detail::InverseSolution& sol) const;

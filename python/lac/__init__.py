@@ -50,16 +50,14 @@ def eval(*, alpha, lambda_, theta=None, s=None, form="auto", integrator="gauss-k
 def quadratic(*, alpha, gamma, lambda_, s=None, s_from=None, s_to=None, samples=100, integrator="gauss-kronrod",
               inverse="ours", through_inflection=False):
     """Points of the quadratic LA curve, as ``lac quadratic``: at the arc lengths s, or `samples` points
-    from s_from to s_to (default: 99.9 % of a finite bound of the domain, else -+2/lambda_)."""
-    import math
-
+    from s_from to s_to (default: the curve's default_range, as ``lac quadratic``)."""
     import numpy as np
 
     c = QuadraticCurve(alpha, gamma, lambda_, inverse=inverse, through_inflection=through_inflection)
     if s is None:
-        lo, hi = c.s_domain
-        s0 = s_from if s_from is not None else (0.999 * lo if math.isfinite(lo) else -2.0 / lambda_)
-        s1 = s_to if s_to is not None else (0.999 * hi if math.isfinite(hi) else 2.0 / lambda_)
+        lo, hi = c.default_range
+        s0 = s_from if s_from is not None else lo
+        s1 = s_to if s_to is not None else hi
         s = np.linspace(s0, s1, samples)
     return c.eval(s, integrator=integrator)
 

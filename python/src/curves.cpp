@@ -307,6 +307,10 @@ void bind_curves(py::module_& m) {
       .def_property_readonly("s_domain", [](const lac::QuadraticLaCurve& c) {
         return py::make_tuple(c.s_domain().lo, c.s_domain().hi);
       })
+      .def_property_readonly("default_range", [](const lac::QuadraticLaCurve& c) {
+        const lac::Interval r = c.default_range();
+        return py::make_tuple(r.lo, r.hi);
+      }, "The default drawing range (s_from, s_to) of `lac quadratic` (docs/quadratic.md)")
       .def_property_readonly("bounds", [](const lac::QuadraticLaCurve& c) {
         py::dict d;
         d["s_at_infinite_kappa"] = c.s_at_infinite_kappa();

@@ -64,7 +64,8 @@ def test_solve_batch_g2():
     t = lac.solve_batch("g2", {"p0": (0, 0), "p1": (4, 0), "theta0": np.linspace(0.4, 0.8, n), "kappa0": 0.5,
                                "theta1": -0.6, "kappa1": -0.3, "alpha": -0.5}, solver="newton")
     assert np.all(t.usable)
-    g = lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, alpha=-0.5)
+    g = lac.g2_hermite(p0=(0, 0), theta0=np.linspace(0.4, 0.8, n)[2], kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3,
+                       alpha=-0.5)
     assert t.length[2] == g.curve.length
 
 

@@ -137,7 +137,7 @@ def test_chain_compound_space(lac_cli):
 
 def test_not_usable_result_has_no_curve():
     # alpha > 0: an inflection is impossible, the S-shaped data has no curve (a proof, status no_solution)
-    r = lac.g1_hermite(p0=(0, 0), theta0=0.5, p1=(1, 0), theta1=0.5, alpha=1.0)
+    r = lac.g1_hermite(p0=(0, 0), theta0=0.5, p1=(1, 0), theta1=0.5, alpha=1.0, winding=0)
     assert not r.usable and r.curve is None and r.status == "no_solution" and r.message
     assert r.summary["length"] is None
 
