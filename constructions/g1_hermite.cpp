@@ -1285,18 +1285,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     res.conclude(Status::no_solution, scope + ": " + proofs.front().second);
     return done();
   }
-  std::string m = scope + ":";
-  std::vector<bool> used(proofs.size(), false);
-  for (size_t i = 0; i < proofs.size(); ++i) {
-    if (used[i]) continue;
-    std::string list;
-    for (size_t j = i; j < proofs.size(); ++j)
-      if (!used[j] && proofs[j].second == proofs[i].second) {
-        list += (list.empty() ? "" : ", ") + format_number(proofs[j].first);
-        used[j] = true;
-      }
-    m += (i == 0 ? " " : "; ") + std::string("turning ") + list + ": " + proofs[i].second;
-  }
+  const std::string m = scope + ":" + detail::proofs_text(proofs);
   res.conclude(Status::no_solution, m);
   return done();
 }

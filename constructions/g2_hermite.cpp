@@ -348,18 +348,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     return finish(failed_status, m);
   }
   if (o.winding) return finish(Status::no_solution, scope + ": " + proofs.front().second);
-  std::string m = scope + ":";
-  std::vector<bool> used(proofs.size(), false);
-  for (size_t i = 0; i < proofs.size(); ++i) {
-    if (used[i]) continue;
-    std::string list;
-    for (size_t j = i; j < proofs.size(); ++j)
-      if (!used[j] && proofs[j].second == proofs[i].second) {
-        list += (list.empty() ? "" : ", ") + format_number(proofs[j].first);
-        used[j] = true;
-      }
-    m += (i == 0 ? " " : "; ") + std::string("turning ") + list + ": " + proofs[i].second;
-  }
+  const std::string m = scope + ":" + detail::proofs_text(proofs);
   return finish(Status::no_solution, m);
 }
 

@@ -10,6 +10,11 @@
 #include <cstddef>
 #include <numbers>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lac/common/error.hpp"
 
 namespace lac::detail {
 
@@ -44,6 +49,24 @@ inline Windings windings_to_try(double base, std::optional<int> winding, double 
     return turning_of(base, a) > turning_of(base, b);
   });
   return w;
+}
+
+/// " turning a, b: why; turning c: why2": the turnings excluded by a proof, grouped by argument
+/// (proofs: (turning, the argument's text)).
+inline std::string proofs_text(const std::vector<std::pair<double, std::string>>& proofs) {
+  std::string m;
+  std::vector<bool> used(proofs.size(), false);
+  for (std::size_t i = 0; i < proofs.size(); ++i) {
+    if (used[i]) continue;
+    std::string list;
+    for (std::size_t j = i; j < proofs.size(); ++j)
+      if (!used[j] && proofs[j].second == proofs[i].second) {
+        list += (list.empty() ? "" : ", ") + format_number(proofs[j].first);
+        used[j] = true;
+      }
+    m += (i == 0 ? " " : "; ") + std::string("turning ") + list + ": " + proofs[i].second;
+  }
+  return m;
 }
 
 }  // namespace lac::detail
