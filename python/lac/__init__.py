@@ -38,7 +38,14 @@ from ._lac import (  # noqa: F401
     space,
 )
 from ._columns import Columns  # noqa: F401
-from .batch import solve_batch  # noqa: F401
+
+
+def solve_batch(kind, data, **options):
+    """Solves one problem per row (numpy columns, scalars broadcast): see lac.batch.solve_batch.
+    numpy is imported on the first call, so that ``import lac`` needs only the extension."""
+    from .batch import solve_batch as _solve_batch
+
+    return _solve_batch(kind, data, **options)
 
 
 def eval(*, alpha, lambda_, theta=None, s=None, form="auto", integrator="gauss-kronrod"):  # noqa: A001
