@@ -209,8 +209,14 @@ struct Normalized {
   double alpha = -1, phi0 = 0, delta = 0;
   long evaluations = 0;
   long constructions = 0;
+  /// Kernel evaluations allowed for α < 0 (G1HermiteOptions::max_evaluations): once spent, every
+  /// shape is "not evaluated" (t.ok = false), so the search ends not_converged, fast. (α ≥ 0 has
+  /// none: its refusals rest on scans that must see every shape.)
+  long budget = std::numeric_limits<long>::max();
+  bool exhausted() const { return alpha < 0 && evaluations >= budget; }
 
   Trial evaluate(double x) {
+    if (exhausted()) return Trial{};
     ++constructions;
     Integral r;
     Trial t;
@@ -811,6 +817,8 @@ void G1HermiteOptions::validate() const {
   if (max_iterations < 1 || max_iterations > 10000) throw_input_error("g1", "max_iterations", max_iterations, "[1, 10000]");
   if (max_bracket_steps < 1 || max_bracket_steps > 100000)
     throw_input_error("g1", "max_bracket_steps", max_bracket_steps, "[1, 100000]");
+  if (max_evaluations < 1000 || max_evaluations > 1'000'000'000)
+    throw_input_error("g1", "max_evaluations", static_cast<double>(max_evaluations), "[1000, 1e9]");
   std::visit([](const auto& m) { m.validate(); }, integrator);
 }
 
@@ -1082,6 +1090,7 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
       b = find_bracket(nz, x0, xmin, xmax, step, o.max_bracket_steps, used);
       sum.iterations += used;
       if (!b.ok) failure = "no sign change of the reduced equation within max_bracket_steps of the guess";
+      if (nz.exhausted()) failure = "evaluation budget max_evaluations = " + std::to_string(o.max_evaluations) + " spent";
     }
     if (b.ok && b.lo == b.hi) {  // the scan met a root exactly
       const Trial t = nz.evaluate(b.lo);
@@ -1164,6 +1173,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   res.info.max_turning = o.winding ? 0.0 : o.max_turning;
   res.info.shape = classify_input(phi0, phi1, turning_of(first));
   Normalized nz;
+  nz.budget = o.max_evaluations;
   nz.alpha = pr.alpha;
   nz.phi0 = phi0;
   nz.delta = turning_of(first);

@@ -91,6 +91,10 @@ struct G1HermiteOptions {
   /// Trial points of the bracket search (α < 0) or of the certified scan of one turning (α ≥ 0),
   /// [1, 100000].
   int max_bracket_steps = 400;
+  /// Kernel evaluations (quadrature nodes and series terms) of one call for α < 0, [1000, 1e9]:
+  /// S-shaped data at 0 < −α ≪ 1 need pieces of up to 4096 panels (the curvature gathers within
+  /// e^(−1/|α|) of the ends); the call ends not_converged once they are spent.
+  long max_evaluations = 500'000;
   double accuracy = 1e-10;    ///< target: largest residual (chord units, rad) for status ok, [tolerance, 1]
   double accept = kDefaultAccept;  ///< usable bound on the achieved error (relative), (0, 0.1]
   void validate() const;      ///< InputError naming the option
