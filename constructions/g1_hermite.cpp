@@ -161,12 +161,16 @@ long gauss_panels(double t0, double t1, int panels, Node&& node) {
 }
 // The same for an integrand e^{g(t)} with |g'|·(t1 − t0)/2 ≤ omega on [t0, t1]: 12, 16 or 20 nodes
 // up to omega = 4, 8, 12, more 20-node panels beyond (error ≲ 1e-14 of the piece for the two kernels
-// that use it, checked against a long-double reference; docs/g1_hermite.md).
+// that use it, checked against a long-double reference; docs/g1_hermite.md). −1, and no node
+// evaluated, where that needs more than kMaxPanels panels (or omega is not finite): the piece is
+// not resolved and the caller's shape is "not evaluated".
 template <class Node>
 long gauss_by_omega(double omega, double t0, double t1, Node&& node) {
   if (omega <= 4) return gauss_panels<12>(t0, t1, 1, node);
   if (omega <= 8) return gauss_panels<16>(t0, t1, 1, node);
-  return gauss_panels<kN>(t0, t1, std::clamp(static_cast<int>(std::ceil(omega / 12)), 1, kMaxPanels), node);
+  const double panels = std::ceil(omega / 12);
+  if (!(panels <= kMaxPanels)) return -1;
+  return gauss_panels<kN>(t0, t1, static_cast<int>(panels), node);
 }
 
 // Summary::evaluations counts kernel evaluations: Gauss–Legendre nodes plus the terms of these
@@ -221,6 +225,7 @@ struct Normalized {
     Integral r;
     Trial t;
     if (alpha == -1) {
+      if (!(0.5 * (std::abs(delta) + std::abs(x)) <= 13.0 * kMaxPanels)) return t;  // turning beyond what is resolved
       r = clothoid(x);
       t.qa = delta - x;
       t.qb = delta + x;
@@ -268,8 +273,11 @@ struct Normalized {
 
   // α = 0: κ = σ e^{q}, q = qa + bu, φ = φ0 + Δ expm1(bu)/expm1(b).
   bool exponential(double b, Integral& r, Trial& t) {
-    if (std::abs(b) >= 1e-3) exponential_far(b, r);
-    else exponential_near(b, r);
+    if (std::abs(b) >= 1e-3) {
+      if (!exponential_far(b, r)) return false;
+    } else {
+      exponential_near(b, r);
+    }
     // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
     const double lr = b == 0 ? 0.0
                       : b > 0 ? std::log(b) - b - std::log(-std::expm1(-b))
@@ -285,18 +293,21 @@ struct Normalized {
   // e^{iφ} = e^{i(φe + D)} Σ (−iD)^n e^(−nv)/n!, integrated term by term; [0, min(V, m)] (only for
   // turnings beyond kSeriesReach) by Gauss–Legendre. The derivative, with V held fixed:
   // dI/dm = (e^{i(φe ± Δ)} − I)/m + (i D′/m)∫₀^m (1 − e^(−v))e^{iφ}dv, D′ = −D/expm1(m).
-  void exponential_far(double b, Integral& r) {
+  bool exponential_far(double b, Integral& r) {
     const bool mirror = b > 0;
     const double m = std::abs(b), phe = mirror ? phi0 + delta : phi0, dl = mirror ? -delta : delta;
     const double D = dl / -std::expm1(-m), W = std::min(m, std::max(0.0, std::log(std::abs(D) / kSeriesReach)));
     Complex J0, J1;  // ∫₀^m e^{iφ} dv and ∫₀^m (1 − e^(−v)) e^{iφ} dv
-    if (W > 0)
-      evaluations += gauss_by_omega(0.5 * W * (std::abs(D) + 1), 0.0, W, [&](double v, double wt) {
+    if (W > 0) {
+      const long n = gauss_by_omega(0.5 * W * (std::abs(D) + 1), 0.0, W, [&](double v, double wt) {
         const double g = -std::expm1(-v);
         const Complex e = std::polar(wt, phe + D * g);
         J0 += e;
         J1 += g * e;
       });
+      if (n < 0) return false;
+      evaluations += n;
+    }
     if (m > W) {
       // Σ c_n T_n and Σ c_n T_(n+1), c_n = (−iD)^n/n!, T_k = ∫_W^m e^(−kv)dv = e^(−kW) S_k / k with
       // S_k = 1 − e^(−kh), h = m − W, by S_(k+1) = S_1 + e^(−h) S_k (no cancellation for small h).
@@ -324,6 +335,7 @@ struct Normalized {
     r.I = J0 / m;
     const Complex dI_dm = (std::polar(1.0, phe + dl) - r.I) / m + Complex(0, -D / std::expm1(m)) * J1 / m;
     r.dI = mirror ? dI_dm : -dI_dm;
+    return true;
   }
 
   // |b| < 1e-3 (near the arc): E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for b > 0 (E = 1 − E(1 − u; −b)),
@@ -483,11 +495,16 @@ struct Normalized {
           const double wa = q_lo.v + ta * span.v, wb = q_lo.v + tb * span.v;
           const double slope = std::abs(amp.v) * std::max(std::exp(p * wa), std::exp(p * wb));
           const double omega = 0.5 * (tb - ta) * span.v * std::hypot(1.0, slope);
-          evaluations += gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
+          const long nodes = gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
             const Dual w = q_lo + tau * span;
             const double ew = std::exp(w.v);
             add(r, wt * (Dual{ew, ew * w.d} * rB * span), phiB + phase(w));
           });
+          if (nodes < 0) {
+            too_steep = true;
+            return;
+          }
+          evaluations += nodes;
         }
       }
       const Dual s_lo = p > 0 ? w0 : split, s_hi = p > 0 ? split : Dual{0, 0};
@@ -546,10 +563,12 @@ struct Normalized {
     } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
       const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
       const Dual Fa = law.F(qa);
-      evaluations += gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
+      const long nodes = gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
         const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
         add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
       });
+      if (nodes < 0) return false;
+      evaluations += nodes;
     }
     return !too_steep;
   }

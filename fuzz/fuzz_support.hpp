@@ -235,6 +235,8 @@ bool guarded(const std::string& what, Call&& call) {
     ~CallContext() { detail::current_call = saved; }
   } context;
   detail::current_call = what;
+  static const bool trace = std::getenv("LAC_FUZZ_TRACE") != nullptr;  // replaying a finding: print each call
+  if (trace) std::fprintf(stderr, "call: %s\n", what.c_str());
   CallTimer timer(what);
   try {
     call();

@@ -590,26 +590,39 @@ inline Record run_chain(Rng& rng) {
       r.detail = input + " | " + std::to_string(res.curve.segments().size()) + " segments for " + std::to_string(pairs) + " pairs";
       return r;
     }
-    PlanarSpec spec;
-    double chord_max = 0;
-    for (size_t k = 0; k < pairs; ++k) chord_max = std::max(chord_max, std::abs(point(k + 1) - point(k)));
-    // Each pair is graded against its own chord: positions and curvatures relative to the
-    // largest chord would hide a small pair's error, so the spec uses the smallest.
-    double chord_min = HUGE_VAL;
-    for (size_t k = 0; k < pairs; ++k) chord_min = std::min(chord_min, std::abs(point(k + 1) - point(k)));
-    spec.scale = chord_min;
+    // Each pair is graded against its own chord, as the chain grades it (summary.error is the
+    // largest pair's error relative to that pair's chord): the pair's segments as one curve, its
+    // end points, tangents (and curvatures) as waypoints. Consecutive pairs meet at the given
+    // points, so the waypoints also check the joints between pairs.
     auto kappa_at = [&](size_t k) -> std::optional<double> {
       if (!g2) return std::nullopt;
       return res.info.kappas.at(k % p.points.size());
     };
-    spec.waypoints.push_back({-1, point(0), res.info.thetas.at(0), kappa_at(0)});
-    for (size_t k = 0; k < pairs; ++k)
-      spec.waypoints.push_back({static_cast<int>((k + 1) * m - 1), point(k + 1), res.info.thetas.at((k + 1) % p.points.size()),
-                                kappa_at(k + 1)});
-    spec.alphas = {p.alpha};
-    spec.straight_any_alpha = true;
-    spec.joint_order = g2 ? 2 : 1;
-    return grade(check_planar(res.curve, spec), res.summary, input);
+    Verdict all;
+    const auto& segs = res.curve.segments();
+    for (size_t k = 0; k < pairs; ++k) {
+      PlanarSpec spec;
+      spec.scale = std::abs(point(k + 1) - point(k));
+      spec.waypoints.push_back({-1, point(k), res.info.thetas.at(k), kappa_at(k)});
+      spec.waypoints.push_back({static_cast<int>(m - 1), point(k + 1), res.info.thetas.at((k + 1) % p.points.size()), kappa_at(k + 1)});
+      spec.alphas = {p.alpha};
+      spec.straight_any_alpha = true;
+      spec.joint_order = g2 ? 2 : 1;
+      const std::vector<LaSegment> part(segs.begin() + static_cast<long>(k * m), segs.begin() + static_cast<long>((k + 1) * m));
+      Verdict v = check_planar(PlanarCurve(part), spec);
+      all.uncertainty = std::max(all.uncertainty, v.uncertainty);
+      if (!v.verified) {
+        v.why = "pair " + std::to_string(k) + ": " + v.why;
+        v.uncertainty = all.uncertainty;
+        all = v;
+        break;
+      }
+      if (v.error > all.error || (std::isinf(v.error) && !std::isinf(all.error))) {
+        all.error = v.error;
+        all.worst = "pair " + std::to_string(k) + ": " + v.worst;
+      }
+    }
+    return grade(all, res.summary, input);
   }
   if (res.summary.status == Status::no_solution) {
     Record r;

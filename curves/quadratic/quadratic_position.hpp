@@ -62,6 +62,19 @@ IntegralResult<std::complex<double>> integrate_quadratic(const QuadraticLaCurve&
   const bool passes = c.options().through_inflection && c.has_inflection() && std::min(a, b) < inflection &&
                       std::max(a, b) > inflection;
   const double theta_a = c.theta_at_s(a), theta_b = c.theta_at_s(b);
+  // Every piece costs at least one evaluation: a turning that needs more pieces than the budget
+  // allows fails at once (e.g. θ ~ 1e80 rad far out on the curve), not after spending it.
+  const double turning = passes ? std::abs(theta_a - c.theta_at_zero_kappa()) + std::abs(c.theta_at_zero_kappa() - theta_b)
+                                : std::abs(theta_b - theta_a);
+  const double min_pieces = std::floor(turning / kMaxTurningPerPiece);
+  if (!(min_pieces <= static_cast<double>(budget))) {
+    r.status = Status::max_iterations;
+    r.message = std::string(M::name) + ": the turning " + format_number(turning) + " rad over [" + format_number(a) + ", " +
+                format_number(b) + "] needs at least " + format_number(min_pieces) + " pieces of at most " +
+                format_number(kMaxTurningPerPiece) + " rad, more than the evaluation budget " + std::to_string(budget) +
+                "; raise --max-evaluations (range [1, 1e10])";
+    return r;
+  }
   if (passes) {
     const double theta_i = c.theta_at_zero_kappa();
     if (piece(piece, a, inflection, theta_a, theta_i, 0)) piece(piece, inflection, b, theta_i, theta_b, 0);

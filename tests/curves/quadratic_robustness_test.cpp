@@ -126,5 +126,24 @@ TEST(QuadraticRobustness, ThetaAtVanishingKappaIsAnInputError) {
   expect_input_error([&] { (void)c.theta_at_s(-8); }, "s", "theta_at_s(-8)");
 }
 
+// Found by the short fuzz run: far out on a curve (θ ~ 1e80 rad) a position call bisected its
+// range into 64-rad pieces until the evaluation budget was spent (2.8 s for one gk-tanh-sinh call).
+// A turning that needs more pieces than the budget has evaluations now fails at once.
+TEST(QuadraticRobustness, TurningBeyondTheBudgetFailsAtOnce) {
+  QuadraticOptions h;
+  h.inverse = special::ErfInverseMethod::hybrid_003;
+  const QuadraticLaCurve c(1, 26.64, 2.220446049250313e-16, h);
+  for (const AnyQuadrature& m : {make_quadrature("gk-tanh-sinh"), make_quadrature("gauss-legendre")}) {
+    const PositionResult r = position_at(c, -7.845709577152253e+78, m);
+    EXPECT_EQ(r.status, Status::max_iterations) << r.message;
+    EXPECT_NE(r.message.find("pieces of at most"), std::string::npos) << r.message;
+    EXPECT_EQ(r.evaluations, 0) << r.message;
+  }
+  const QuadraticLaCurve d(1, 5.256633473081384e+83, 5.256633473081384e+83, h);
+  const auto points = polyline(d, -0.013072967529296875, 5.256633473081384e+83, 5, GaussLegendre{});
+  ASSERT_EQ(points.size(), 5u);
+  EXPECT_EQ(points.back().status, Status::max_iterations) << points.back().message;
+}
+
 }  // namespace
 }  // namespace lac

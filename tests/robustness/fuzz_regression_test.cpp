@@ -11,6 +11,7 @@
 #include <string>
 
 #include "lac/common/error.hpp"
+#include "lac/constructions/chain.hpp"
 #include "lac/constructions/g1_hermite.hpp"
 #include "lac/constructions/space_segment.hpp"
 #include "lac/constructions/triangle_g1.hpp"
@@ -308,4 +309,24 @@ TEST(FuzzRegression, G1HermiteBeyondTheDoubleRangeIsNumericalFailure) {
   const lac::G1HermiteResult small = lac::solve_g1_hermite({{0, 0}, 0.3, {1e-300, 0}, -0.4, -2.0});
   ASSERT_TRUE(unit.usable() && small.usable()) << small.summary.message;
   EXPECT_NEAR(small.curve.kappa_at(0) * 1e-300 / unit.curve.kappa_at(0), 1.0, 1e-12);
+}
+
+// A G1 chain at α = −1.07e-12 through points up to 3e214 apart asked the log-variable kernel for
+// 3.9e9 panels of one piece (an int overflow, undefined behaviour): a piece needing more than the
+// kernel's panel cap is now "not evaluated", like a piece too steep for its series.
+TEST(FuzzRegression, G1PieceBeyondThePanelCapIsNotEvaluated) {
+  lac::ChainProblem p;
+  p.points = {{-1.9091796875, -0.86083984375},       {-0.08541107177734375, -0.663818359375},
+              {-1.03466796875, -19610889393012736.0}, {1.236083984375, -4.80126953125},
+              {-1.0700329511337259e-12, -1.0700329511337259e-12}, {-169553489096081408.0, 2.8791116233294963e+214}};
+  p.alpha = -1.0700329511337259e-12;
+  p.continuity = lac::ChainContinuity::g1;
+  const lac::ChainResult r = lac::solve_chain(p);
+  const std::string what = std::string(lac::to_string(r.summary.status)) + " " + r.summary.message;
+  if (r.usable()) {
+    ASSERT_EQ(r.curve.segments().size(), 5u) << what;
+    EXPECT_TRUE(std::isfinite(r.curve.length())) << what;
+  } else {
+    EXPECT_FALSE(r.summary.message.empty()) << what;
+  }
 }
