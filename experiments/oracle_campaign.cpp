@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   unsigned long seed = 1;
   int threads = 2;
   bool write = true;
-  app.add_option("--construction", construction, "g1, g2, scurve, chain, compound, quadratic, eval, or all");
+  app.add_option("--construction", construction, "g1, g2, scurve, chain, compound, quadratic, eval, space, or all");
   app.add_option("--count", count, "problems per construction")->check(CLI::Range(1L, 1000000000L));
   app.add_option("--first", first, "index of the first problem (a slice of a campaign)")->check(CLI::NonNegativeNumber);
   app.add_option("--seed", seed, "campaign seed");

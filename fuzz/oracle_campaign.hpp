@@ -31,6 +31,8 @@
 #include "lac/constructions/g1_hermite.hpp"
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/constructions/s_curve.hpp"
+#include "lac/constructions/space_drawable_cases.hpp"
+#include "lac/constructions/space_segment.hpp"
 #include "lac/constructions/triangle_g1.hpp"
 #include "lac/curves/planar/la_curve.hpp"
 #include "lac/curves/planar/la_position.hpp"
@@ -46,7 +48,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kPositionAccept = 1e-6;
 
 inline const std::vector<std::string>& constructions() {
-  static const std::vector<std::string> names{"g1", "g2", "scurve", "chain", "compound", "quadratic", "eval"};
+  static const std::vector<std::string> names{"g1", "g2", "scurve", "chain", "compound", "quadratic", "eval", "space"};
   return names;
 }
 
@@ -816,6 +818,66 @@ inline Record run_quadratic(Rng& rng) {
 
 // ------------------------------------------------------------------------------------------------
 
+// ------------------------------------------------------------------------------------------------
+// LA space segments (constructions/space_segment.hpp): G1 and compound-rhythm, half of the problems
+// drawable by construction (constructions/space_drawable_cases.hpp), half random end data. The
+// construction never claims that no curve exists (a failed solve is not_converged or
+// max_iterations), so only usable results are checked.
+
+inline std::string vec(const Vec3& x) { return num(x[0]) + "," + num(x[1]) + "," + num(x[2]); }
+
+inline Record run_space(Rng& rng) {
+  const bool compound = rng.chance(0.4);
+  DrawableCase c;
+  if (rng.chance(0.5)) {
+    std::mt19937_64 engine(rng.g());
+    c = random_drawable_case(engine, compound);
+  } else {
+    auto v3 = [&](double r) { return Vec3(rng.uniform(-r, r), rng.uniform(-r, r), rng.uniform(-r, r)); };
+    c.compound = compound;
+    c.ends = {v3(5), v3(1), v3(5), v3(1)};
+    c.spec.alpha0 = rng.uniform(-1, 2);
+    c.spec.alpha1 = rng.uniform(-1, 2);
+    c.spec.beta0 = rng.uniform(-1, 2);
+    c.spec.beta1 = rng.uniform(-1, 2);
+    c.spec.omega0 = rng.uniform(0.05, 0.6);
+    c.spec.r_theta = rng.uniform(0.3, 0.7);
+    c.spec.type = rng.chance(0.5) ? TorsionType::type1 : TorsionType::type2;
+  }
+  SpaceSegmentOptions o;
+  const auto& solvers = nonlinear_methods();
+  const auto& solver = solvers[static_cast<size_t>(rng.integer(0, static_cast<int>(solvers.size()) - 1))];
+  o.solver = parse_nonlinear_method(solver.name);
+  const bool rk45 = rng.chance(0.3);
+  if (rk45) o.integrator = OdeOptions{OdeMethod::rk45, 1e-10, 1e-11};
+  std::string input = std::string(compound ? "solve_compound_space_segment" : "solve_g1_space_segment") + " p0 " +
+                      vec(c.ends.p0) + " v0 " + vec(c.ends.v0) + " p1 " + vec(c.ends.p1) + " v1 " + vec(c.ends.v1) +
+                      " alpha " + num(c.spec.alpha0) + " beta " + num(c.spec.beta0) + " omega " + num(c.spec.omega0) +
+                      (c.spec.type == TorsionType::type1 ? " type1" : " type2");
+  if (compound) input += " alpha1 " + num(c.spec.alpha1) + " beta1 " + num(c.spec.beta1) + " r_theta " + num(c.spec.r_theta);
+  input += std::string(" solver ") + std::string(solver.name) + (rk45 ? " integrator rk45" : " integrator magnus6");
+  trace_input(input);
+  Result<SpaceCurve, SpaceInfo> res;
+  try {
+    res = compound ? solve_compound_space_segment(c.ends, c.spec, o) : solve_g1_space_segment(c.ends, c.g1(), o);
+  } catch (const InputError&) {
+    return {Outcome::input_error, 0, {}, {}, false};
+  }
+  if (res.usable()) {
+    SpaceSpec spec{c.ends.p0, c.ends.v0, c.ends.p1, c.ends.v1, {}, compound};
+    if (compound) spec.slopes = {{c.spec.alpha0, c.spec.beta0}, {c.spec.alpha1, c.spec.beta1}};
+    else spec.slopes = {{c.spec.alpha0, c.spec.beta0}};
+    return grade(check_space(res.curve, spec), res.summary, input);
+  }
+  if (res.summary.status == Status::no_solution) {
+    Record r;
+    r.outcome = Outcome::false_no_curve;  // no proof of no curve exists for space segments
+    r.detail = input + " | no_solution: " + res.summary.message;
+    return r;
+  }
+  return not_usable(res.summary);
+}
+
 inline Record run_one(const std::string& construction, unsigned long seed, long index) {
   Rng rng(seed, construction, index);
   try {
@@ -826,12 +888,13 @@ inline Record run_one(const std::string& construction, unsigned long seed, long 
     if (construction == "compound") return run_compound(rng);
     if (construction == "eval") return run_eval(rng);
     if (construction == "quadratic") return run_quadratic(rng);
+    if (construction == "space") return run_space(rng);
   } catch (const InputError&) {
     return {Outcome::input_error, 0, {}, {}, false};
   } catch (const std::exception& e) {
     return {Outcome::exception, 0, "", construction + " problem " + std::to_string(index) + ": " + e.what(), false};
   }
-  throw_input_error("oracle", "construction", "'" + construction + "' is not one of g1 g2 scurve chain compound quadratic eval");
+  throw_input_error("oracle", "construction", "'" + construction + "' is not one of g1 g2 scurve chain compound quadratic eval space");
 }
 
 /// Runs problems [first, first + count) of one construction (in parallel under the caller's

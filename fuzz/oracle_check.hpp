@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "lac/curves/planar/planar_curve.hpp"
+#include "lac/curves/space/space_curve.hpp"
 
 namespace lac::oracle {
 
@@ -521,5 +522,157 @@ inline QuadraticPoint quadratic_point(double alpha, double gamma, double lambda,
   return out;
 }
 #pragma GCC diagnostic pop
+
+// ---------------------------------------------------------------------------------------------
+// LA space curves (000 §2; docs/math.md §3): the laws written afresh in the standard form,
+//   ρ(s) = e^{Λs} (α = 0) or (1 + αΛs)^{1/α};  μ(s) = ν e^{σΩs} (β = 0) or (σΩβs + ν^β)^{1/β},
+// σ = +1 for type 1 (μ increasing), −1 for type 2; κ = 1/ρ, τ = 1/μ, and the Frenet–Serret
+// equations P' = T, T' = κN, N' = −κT + τB, B' = −τN integrated in long double by Boost.Odeint's
+// RKF78, each step turning the frame by at most kSpaceStepTurn rad (√(κ² + τ²) h), from each
+// piece's start frame (no ODE method of lac's).
+
+inline constexpr R kSpaceStepTurn = 0.25L;
+
+struct SpaceLawL {
+  R alpha, beta, lambda, omega, nu, sigma;
+  R rho(R s) const { return alpha == 0 ? std::exp(lambda * s) : std::pow(1 + alpha * lambda * s, 1 / alpha); }
+  R mu(R s) const { return beta == 0 ? nu * std::exp(sigma * omega * s) : std::pow(sigma * omega * beta * s + std::pow(nu, beta), 1 / beta); }
+};
+
+struct FrameL {
+  std::array<R, 3> p{}, t{}, n{}, b{};
+  bool ok = true;
+};
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+/// The standard-form frame at s1 from `start` at s0 (s1 ≥ s0).
+inline FrameL space_frame(const SpaceLawL& law, const FrameL& start, R s0, R s1) {
+  using State = std::array<R, 12>;
+  namespace ode = boost::numeric::odeint;
+  State y;
+  for (int i = 0; i < 3; ++i) y[i] = start.p[i], y[3 + i] = start.t[i], y[6 + i] = start.n[i], y[9 + i] = start.b[i];
+  auto rhs = [&](const State& x, State& dx, R s) {
+    const R k = 1 / law.rho(s), tau = 1 / law.mu(s);
+    for (int i = 0; i < 3; ++i) {
+      dx[i] = x[3 + i];
+      dx[3 + i] = k * x[6 + i];
+      dx[6 + i] = -k * x[3 + i] + tau * x[9 + i];
+      dx[9 + i] = -tau * x[6 + i];
+    }
+  };
+  FrameL out = start;
+  auto stepper = ode::make_controlled(R(1e-17), R(1e-17), ode::runge_kutta_fehlberg78<State, R>());
+  R s = s0, dt = (s1 - s0) / 16;
+  long steps = 0;
+  while (s < s1) {
+    if (++steps > 400000 || !(dt > 0)) {
+      out.ok = false;
+      return out;
+    }
+    const R rate = std::hypot(1 / law.rho(s), 1 / law.mu(s));
+    if (dt * rate > kSpaceStepTurn) dt = kSpaceStepTurn / rate;
+    if (s + dt > s1) dt = s1 - s;
+    stepper.try_step(rhs, y, s, dt);
+    for (R c : y)
+      if (!std::isfinite(c)) {
+        out.ok = false;
+        return out;
+      }
+  }
+  for (int i = 0; i < 3; ++i) out.p[i] = y[i], out.t[i] = y[3 + i], out.n[i] = y[6 + i], out.b[i] = y[9 + i];
+  return out;
+}
+#pragma GCC diagnostic pop
+
+/// What a space construction promised: its end points, directions and laws.
+struct SpaceSpec {
+  Vec3 p0, v0, p1, v1;
+  std::vector<std::array<double, 2>> slopes;  ///< (α, β) of each piece
+  bool joint_continuity = false;              ///< compound: κ, τ and the frame continuous at the joint
+};
+
+/// Checks a space curve: start and end point (relative to |p1 − p0|), start and end tangent
+/// (rad), each piece's slopes, and for a compound segment the joint (frame, κ and τ relative).
+inline Verdict check_space(const SpaceCurve& curve, const SpaceSpec& spec) {
+  Verdict v;
+  const auto& pieces = curve.pieces();
+  if (pieces.empty() || (!spec.slopes.empty() && pieces.size() != spec.slopes.size())) {
+    v.error = HUGE_VAL;
+    v.worst = "piece count";
+    return v;
+  }
+  const SpacePlacement& pl = curve.placement();
+  const R chord = (spec.p1 - spec.p0).norm();
+  auto user_point = [&](const std::array<R, 3>& q) {
+    std::array<R, 3> u;
+    for (int i = 0; i < 3; ++i) u[i] = pl.origin[i] + pl.matrix(i, 0) * q[0] + pl.matrix(i, 1) * q[1] + pl.matrix(i, 2) * q[2];
+    return u;
+  };
+  auto user_dir = [&](const std::array<R, 3>& q) {
+    std::array<R, 3> u;
+    for (int i = 0; i < 3; ++i) u[i] = pl.matrix(i, 0) * q[0] + pl.matrix(i, 1) * q[1] + pl.matrix(i, 2) * q[2];
+    const R n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (R& c : u) c /= n;
+    return u;
+  };
+  auto distance = [](const std::array<R, 3>& a, const Vec3& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  auto angle = [](const std::array<R, 3>& a, const Vec3& b) {  // a unit, b any length
+    const Vec3 bn = b.normalized();
+    const R c0 = a[1] * bn[2] - a[2] * bn[1], c1 = a[2] * bn[0] - a[0] * bn[2], c2 = a[0] * bn[1] - a[1] * bn[0];
+    return std::atan2(std::sqrt(c0 * c0 + c1 * c1 + c2 * c2), a[0] * bn[0] + a[1] * bn[1] + a[2] * bn[2]);
+  };
+  auto to_l = [](const Frame3& f) {
+    FrameL o;
+    for (int i = 0; i < 3; ++i) o.p[i] = f.p[i], o.t[i] = f.t[i], o.n[i] = f.n[i], o.b[i] = f.b[i];
+    return o;
+  };
+  FrameL prev_end;
+  R prev_kappa = 0, prev_tau = 0;
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    const SpacePiece& pc = pieces[k];
+    const LaSpaceCurve& law = pc.law;
+    if (!spec.slopes.empty() && (law.alpha() != spec.slopes[k][0] || law.beta() != spec.slopes[k][1]))
+      note(v, HUGE_VALL, "slopes of piece " + std::to_string(k));
+    const SpaceLawL L{law.alpha(), law.beta(), law.lambda(), law.omega(), law.nu(), law.type() == TorsionType::type1 ? R(1) : R(-1)};
+    const FrameL start = to_l(pc.start);
+    const std::string name = "piece " + std::to_string(k);
+    if (k == 0) {
+      note(v, distance(user_point(start.p), spec.p0) / chord, "start position");
+      note(v, angle(user_dir(start.t), spec.v0), "start tangent");
+    } else if (spec.joint_continuity) {
+      // The joint: this piece's start frame against the oracle's end of the previous piece, and
+      // κ, τ of both laws there (relative).
+      R dp = 0, dt = 0;
+      for (int i = 0; i < 3; ++i) {
+        dp = std::max(dp, std::fabs(start.p[i] - prev_end.p[i]));
+        dt = std::max({dt, std::fabs(start.t[i] - prev_end.t[i]), std::fabs(start.n[i] - prev_end.n[i]), std::fabs(start.b[i] - prev_end.b[i])});
+      }
+      note(v, dp * pl.scale / chord, "joint position");
+      note(v, dt, "joint frame");
+      const R kap = 1 / L.rho(pc.s_begin), tau = 1 / L.mu(pc.s_begin);
+      note(v, std::fabs(kap - prev_kappa) / std::max(kap, prev_kappa), "joint curvature");
+      note(v, std::fabs(tau - prev_tau) / std::max(tau, prev_tau), "joint torsion");
+    }
+    const FrameL end = space_frame(L, start, pc.s_begin, pc.s_end);
+    if (!end.ok) {
+      v.verified = false;
+      v.why = name + ": the oracle's integration failed";
+      return v;
+    }
+    v.uncertainty = std::max(v.uncertainty, static_cast<double>(1e-14L * (1 + (pc.s_end - pc.s_begin) * pl.scale / chord)));
+    prev_end = end;
+    prev_kappa = 1 / L.rho(pc.s_end);
+    prev_tau = 1 / L.mu(pc.s_end);
+    if (k + 1 == pieces.size()) {
+      note(v, distance(user_point(end.p), spec.p1) / chord, "end position");
+      note(v, angle(user_dir(end.t), spec.v1), "end tangent");
+    }
+  }
+  return v;
+}
 
 }  // namespace lac::oracle

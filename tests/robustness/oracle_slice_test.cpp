@@ -2,7 +2,8 @@
 // of the campaign itself (fuzz/oracle_campaign.hpp; the full run: docs/robustness.md).
 //
 // OracleCheck.*: the long-double oracle against closed forms (a circle, a line, the clothoid's
-// symmetric arc) and its power to fail (a curve moved by 1e-5 of its chord is wrong).
+// symmetric arc, a drawable space segment) and its power to fail (a curve moved by 1e-5 of its
+// chord is wrong).
 // OracleSlice.*: problems [0, n) of seed 1 per construction, two TBB threads; any wrong-but-usable
 // result, false no-curve answer or unexpected exception fails, except the open findings listed in
 // fuzz/oracle_open.tsv (found on main by this campaign, reported, waiting for their fix): a listed
@@ -11,6 +12,7 @@
 #include <tbb/global_control.h>
 
 #include <fstream>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -100,6 +102,27 @@ TEST(OracleCheck, DetectsACurveMovedByMoreThanAccept) {
   EXPECT_TRUE(std::isinf(check_planar(r.curve, g1_spec(other, 0)).error));
 }
 
+// The space oracle on a drawable G1 segment: verified within 1e-9; the same curve placed 1e-5 of
+// the chord away, or with another β, is wrong.
+TEST(OracleCheck, SpaceSegmentAndItsPower) {
+  std::mt19937_64 engine(7);
+  const DrawableCase c = random_drawable_case(engine, false);
+  const auto r = solve_g1_space_segment(c.ends, c.g1());
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  const SpaceSpec spec{c.ends.p0, c.ends.v0, c.ends.p1, c.ends.v1, {{c.spec.alpha0, c.spec.beta0}}, false};
+  const Verdict good = check_space(r.curve, spec);
+  ASSERT_TRUE(good.verified) << good.why;
+  EXPECT_LT(good.error, 1e-9) << good.worst;
+  SpacePlacement moved = r.curve.placement();
+  const double chord = (c.ends.p1 - c.ends.p0).norm();
+  moved.origin += Vec3(0, 0, 1e-5 * chord);
+  const Verdict bad = check_space(SpaceCurve(r.curve.pieces(), moved, r.curve.ode_options()), spec);
+  EXPECT_NEAR(bad.error, 1e-5, 1e-8) << bad.worst;
+  SpaceSpec other = spec;
+  other.slopes = {{c.spec.alpha0, c.spec.beta0 + 0.5}};
+  EXPECT_TRUE(std::isinf(check_space(r.curve, other).error));
+}
+
 TEST(OracleCheck, ProofConditionsOfG1AndG2) {
   // Tangents on one side of the chord at α ≥ 0: proven; the same at α < 0: no proof.
   EXPECT_TRUE(g1_no_curve_proven({{0, 0}, {1, 0}, 0.5, 0.6, 1.0, 0}, 0));
@@ -159,5 +182,6 @@ TEST(OracleSlice, Chain) { run_slice("chain", 100); }
 TEST(OracleSlice, Compound) { run_slice("compound", 200); }
 TEST(OracleSlice, Quadratic) { run_slice("quadratic", 150); }
 TEST(OracleSlice, Eval) { run_slice("eval", 2000); }
+TEST(OracleSlice, Space) { run_slice("space", 60); }
 
 }  // namespace
