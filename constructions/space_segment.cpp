@@ -329,6 +329,7 @@ RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
   so.newton.fd_step = 1e-7;
   so.newton.max_step = 1.5;
   so.newton.max_iterations = 25;  // converging runs need 4–8; a run this long is better restarted elsewhere
+  so.newton.max_halvings = 12;    // steps down to 1.5·2^-12 in log Λ0, log ν0: a run that needs less is stalled
   so.ceres.max_iterations = 100;
   const NonlinearResidual residual{2, [&](ConstVectorMap x, VectorMap r) {
                                      const auto t = trial(Vec2(x));

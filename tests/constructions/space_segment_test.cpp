@@ -385,6 +385,17 @@ TEST(SpaceSegment, UndrawableConfigurationIsNotConvergedNotAnException) {
   }
 }
 
+// Found by a short fuzz run of the CLI: a failing G1 solve took 2280 constructions (1 s sanitized),
+// each stalled Newton iteration halving its step 30 times. Steps stop at 2^-12: the same data fail
+// in a quarter of the constructions, and the drawable cases solve as often as before
+// (results/space_solvers.md).
+TEST(SpaceSegment, FailingNewtonSolveIsShort) {
+  const SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(1, 1, 0), Vec3(1, 1, 0.3)};
+  const SpaceResult r = solve_g1_space_segment(e, {-1, 1, 0.2, TorsionType::type1});
+  EXPECT_EQ(r.summary.status, Status::not_converged) << r.summary.message;
+  EXPECT_LE(r.summary.constructions, 600) << r.summary.message;
+}
+
 TEST(SpaceSegment, BadInputNamesTheParameter) {
   const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   const G1SpaceSpec g{0, 0, 0.1, TorsionType::type1};
