@@ -1,0 +1,53 @@
+#pragma once
+// The tangent integral of one planar LA segment in the normalized form of the G1 Hermite problem
+// (004 §3; docs/g1_hermite.md "Kernel"): u ∈ [0, 1], φ(0) = φ0, φ(1) = φ0 + Δ, q linear in u
+// (la_law.hpp), the remaining freedom a shape variable x:
+//   α = −1:  x = A, q = κ per unit u = (Δ − A, Δ + A) at u = 0, 1   (φ = φ0 + (Δ − A)u + Au²)
+//   α = 0:   x = b = log(κb/κa)                                       (φ = φ0 + Δ expm1(bu)/expm1(b))
+//   α > 0:   x = log(qb/qa)                                           (q keeps its sign)
+//   α < 0:   x = a, (qa, qb) ∝ (Δ − a, Δ + a)                         (|a| > |Δ|: an inflection)
+// evaluate(x) gives I = ∫₀¹ e^{iφ(u)} du and dI/dx (forward-mode derivatives), ≲ 1e-14 relative:
+// closed-form series in a logarithmic variable where a piece turns little, Gauss–Legendre panels
+// sized by the phase's slope elsewhere, in the offset variables of la_law.hpp for 0 < |α| <
+// kLaKernelSmallAlpha (continuous through α = 0). A shape the kernel cannot resolve (a piece past
+// its panel cap, a steep piece beyond its series, non-finite data) is "not evaluated" (ok = false),
+// never a wrong value.
+//
+//   lac::LaSegmentKernel k{.alpha = -0.5, .phi0 = 0.3, .delta = -0.8};
+//   lac::LaKernelValue v = k.evaluate(0.2);   // v.integral, v.d_integral, v.qa, v.qb
+#include <complex>
+#include <limits>
+
+namespace lac {
+
+/// Below this |α| (α ≠ 0) a shape without a zero of q on [0, 1] is evaluated in the variables of
+/// the α = 0 law (la_law.hpp's offset form).
+inline constexpr double kLaKernelSmallAlpha = 0.05;
+
+/// One evaluation of the kernel at a shape x.
+struct LaKernelValue {
+  bool ok = false;  ///< false: not evaluated (see above); the other fields are then meaningless
+  /// Im I and Im dI/dx: the G1 end-tangent condition (the chord along the real axis) and its slope.
+  double f = std::numeric_limits<double>::quiet_NaN(), df = std::numeric_limits<double>::quiet_NaN();
+  std::complex<double> I;   ///< ∫₀¹ e^{iφ(u)} du
+  std::complex<double> dI;  ///< dI/dx
+  double qa = 0, qb = 0;    ///< the segment's q (α ≠ 0) or log|κ| (α = 0) at u = 0, 1, per unit u
+  bool offset = false;      ///< qa, qb in the offset form of la_law.hpp (small |α|), σ = sgn Δ
+};
+
+struct LaSegmentKernel {
+  double alpha = -1, phi0 = 0, delta = 0;
+  long evaluations = 0;    ///< kernel evaluations so far: Gauss–Legendre nodes plus series terms
+  long constructions = 0;  ///< shapes evaluated so far
+  /// Kernel evaluations allowed for α < 0: once spent, every shape is "not evaluated" (a search
+  /// over shapes then ends fast). α ≥ 0 has none (the G1 refusals rest on scans of every shape).
+  long budget = std::numeric_limits<long>::max();
+  bool exhausted() const { return alpha < 0 && evaluations >= budget; }
+  LaKernelValue evaluate(double x);
+};
+
+/// ∫₀¹ e^{iΔv^p} dv for 0 < p < 1: the limit shape of α > 1 as the shape variable goes to ±∞
+/// (docs/g1_hermite.md "Proofs of no solution"); adds its kernel evaluations to `evaluations`.
+std::complex<double> power_limit_integral(double delta, double p, long& evaluations);
+
+}  // namespace lac
