@@ -185,9 +185,9 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     else if (info.inflection) info.shape = nz.phi0 * (nz.phi0 + nz.delta) > 0 ? G1Shape::s_shaped : G1Shape::convex_inflection;
     else info.shape = G1Shape::convex;
     // The achieved error (common/accuracy.hpp): conclude() grades it against accept.
-    // The kernel's end point carries its relative accuracy (≤ 3e-14 of ∫|e^{iφ}| = 1, docs/g1_hermite.md)
-    // times the length: a loop thousands of chords long cannot meet the chord to rounding.
-    const double kernel_bound = 4e-14 * info.length / r;
+    // The kernel's end point carries its relative accuracy (kLaKernelError of ∫|e^{iφ}| = 1) times
+    // the length: a loop thousands of chords long cannot meet the chord to rounding.
+    const double kernel_bound = kLaKernelError * info.length / r;
     sum.error = std::max({position / r, angle, sum.error_estimate.value_or(0.0) / r, kernel_bound});
     sum.accept = o.accept;
     const bool good = *sum.error <= o.accuracy;

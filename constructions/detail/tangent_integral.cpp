@@ -8,6 +8,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/curves/detail/polyline.hpp"
+#include "lac/curves/planar/la_segment_kernel.hpp"
 #include "lac/curves/planar/standard_form.hpp"
 
 namespace lac::detail {
@@ -124,6 +125,10 @@ Complex trial_integral(const void* method, const LaLaw& law, const LinearQ& seg,
   const M& m = *static_cast<const M*>(method);
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   if constexpr (std::is_same_v<M, GaussLegendre>) {
+    // The segment kernel (curves/planar/la_segment_kernel.hpp), on the same trial domain as every
+    // method; the graded fast path where the kernel does not evaluate the segment.
+    if (!resolvable(law, seg)) return {kNaN, kNaN};
+    if (const auto k = segment_integral(law, seg, evaluations)) return k->value;
     return integrate_tangent(law, seg, evaluations, m.panels);
   } else {
     // The same trial domain for every method: a piece turning more than the fast path resolves is a

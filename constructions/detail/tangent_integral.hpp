@@ -2,7 +2,7 @@
 // ∫ e^{iφ(u)} du over a segment in linear-q form (curves/planar/la_law.hpp) with any method of the
 // quadrature registry: what the 004 constructions integrate for every trial curve and for the
 // returned one. The methods that integrate any integrand go through LaSegment's kernels
-// (curves/planar/la_segment.hpp; gauss-legendre through its fast path); igf, a closed form of the
+// (curves/planar/la_segment.hpp; gauss-legendre through the segment kernel); igf, a closed form of the
 // standard form, through the standard-form conversion (curves/planar/standard_form.hpp).
 #include <complex>
 #include <limits>
@@ -34,8 +34,9 @@ inline constexpr double kIgfMinU = 1e-3;
 /// piece (a side of a zero of q) turning more than kMaxResolvedTurning gives NaN without
 /// evaluating the integrand, so the choice of method does not change which trial curves exist.
 /// With a limit, a call whose `evaluations` counter has reached it gives NaN at once too (the
-/// construction's evaluation budget; the caller reports it). gauss-legendre is the fast path of
-/// detail::integrate_tangent without its error estimate (its value bit for bit). Keeps a pointer
+/// construction's evaluation budget; the caller reports it). gauss-legendre is LaSegment's
+/// GaussLegendre path without its error estimate (its value bit for bit): the segment kernel
+/// (curves/planar/la_segment_kernel.hpp), else detail::integrate_tangent. Keeps a pointer
 /// to the method: the method must outlive the integrator.
 class TrialIntegrator {
  public:

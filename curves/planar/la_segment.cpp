@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/la_segment_kernel.hpp"
 
 namespace lac {
 
@@ -161,6 +162,14 @@ double tangent_rounding(const LaLaw& law, const LinearQ& seg) {
 
 IntegralResult<std::complex<double>> integrate_tangent_gl(const LaLaw& law, const LinearQ& seg, const GaussLegendre& m) {
   IntegralResult<std::complex<double>> r;
+  // The segment kernel (la_segment_kernel.hpp): Gauss–Legendre panels sized by the phase and
+  // closed-form series, within kLaKernelError of the length; the graded panels below where it
+  // does not evaluate the segment.
+  if (const auto kernel = segment_integral(law, seg, r.evaluations)) {
+    r.value = kernel->value;
+    r.error_estimate = kernel->error;
+    return r;
+  }
   std::complex<double> coarse;
   r.value = integrate_tangent(law, seg, r.evaluations, m.panels, &coarse);
   const double l1 = seg.ub - seg.ua;  // |e^{iφ}| = 1

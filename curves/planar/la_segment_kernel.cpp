@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -205,7 +206,7 @@ struct Kernel {
     Integral r;
     Trial t;
     if (alpha == -1) {
-      if (!(0.5 * (std::abs(delta) + std::abs(x)) <= 13.0 * kMaxPanels)) return t;  // turning beyond what is resolved
+      if (!(0.5 * (std::abs(delta) + std::abs(x)) <= 12.0 * kMaxPanels)) return t;  // turning beyond what is resolved
       r = clothoid(x);
       t.qa = delta - x;
       t.qb = delta + x;
@@ -226,9 +227,25 @@ struct Kernel {
     return t;
   }
 
+  // α < 0, α ≠ −1: the segment with q = (qa, qb) per unit u at u = 0, 1 (plain form; Δ = F[qa, qb]
+  // already in delta), no shape derivative.
+  Trial evaluate_q(double qa, double qb) {
+    if (exhausted()) return Trial{};
+    ++constructions;
+    Integral r;
+    Trial t;
+    if (!power_from_q(Dual{qa, 0}, Dual{qb, 0}, r, t)) return t;
+    t.I = r.I;
+    t.dI = r.dI;
+    t.f = r.I.imag();
+    t.df = r.dI.imag();
+    t.ok = std::isfinite(t.f) && std::isfinite(t.I.real());
+    return t;
+  }
+
   // α = −1 [Bertolazzi–Frego 2015]: φ = φ0 + (Δ − A)u + Au², ∂φ/∂A = u² − u. The node count
-  // follows the largest |dφ/dv| on v ∈ [−1, 1] (u = (1 + v)/2): 12, 16 or 20 nodes keep the
-  // Gauss–Legendre error of e^{iφ} below 1e-14 for it up to 4.5, 9, 13 rad.
+  // follows the largest |dφ/dv| on v ∈ [−1, 1] (u = (1 + v)/2): 12, 16 or 20 nodes up to 4, 8,
+  // 12 rad, as gauss_by_omega (at 4.5 rad 12 nodes left 6e-14, tests/curves/la_segment_kernel_test.cpp).
   template <int N>
   Integral clothoid_rule(double A, int panels) {
     const GaussLegendreRule<N>& g = gauss_legendre_rule<N>();
@@ -247,9 +264,9 @@ struct Kernel {
   }
   Integral clothoid(double A) {
     const double omega = 0.5 * (std::abs(delta) + std::abs(A));
-    if (omega <= 4.5) return clothoid_rule<12>(A, 1);
-    if (omega <= 9) return clothoid_rule<16>(A, 1);
-    return clothoid_rule<20>(A, std::max(1, static_cast<int>(std::ceil(omega / 13))));
+    if (omega <= 4) return clothoid_rule<12>(A, 1);
+    if (omega <= 8) return clothoid_rule<16>(A, 1);
+    return clothoid_rule<20>(A, std::max(1, static_cast<int>(std::ceil(omega / 12))));
   }
 
   // α = 0: κ = σ e^{q}, q = qa + bu, φ = φ0 + Δ expm1(bu)/expm1(b).
@@ -419,6 +436,12 @@ struct Kernel {
       qb = lambda * (s + cbar);
       if (!std::isfinite(lambda.d)) return false;
     }
+    return power_from_q(qa, qb, r, t);
+  }
+
+  // The integral for given q at u = 0, 1 (their derivatives in x carried along); Δ = F[qa, qb].
+  bool power_from_q(Dual qa, Dual qb, Integral& r, Trial& t) {
+    const Power law(alpha);
     const Dual c = 0.5 * (qb - qa);
     t.qa = qa.v;
     t.qb = qb.v;
@@ -557,19 +580,77 @@ struct Kernel {
 
 }  // namespace
 
-LaKernelValue LaSegmentKernel::evaluate(double x) {
+namespace {
+template <class Call>
+LaKernelValue run(LaSegmentKernel& s, Call&& call) {
   Kernel k;
-  k.alpha = alpha;
-  k.phi0 = phi0;
-  k.delta = delta;
-  k.evaluations = evaluations;
-  k.constructions = constructions;
-  k.budget = budget;
-  const LaKernelValue v = k.evaluate(x);
-  evaluations = k.evaluations;
-  constructions = k.constructions;
+  k.alpha = s.alpha;
+  k.phi0 = s.phi0;
+  k.delta = s.delta;
+  k.evaluations = s.evaluations;
+  k.constructions = s.constructions;
+  k.budget = s.budget;
+  const LaKernelValue v = call(k);
+  s.evaluations = k.evaluations;
+  s.constructions = k.constructions;
   return v;
 }
+}  // namespace
+
+LaKernelValue LaSegmentKernel::evaluate(double x) {
+  return run(*this, [x](Kernel& k) { return k.evaluate(x); });
+}
+
+LaKernelValue LaSegmentKernel::evaluate_q(double qa, double qb) {
+  if (!(alpha < 0 && alpha != -1)) return {};
+  return run(*this, [qa, qb](Kernel& k) { return k.evaluate_q(qa, qb); });
+}
+
+std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail::LinearQ& seg, long& evaluations) {
+  const double h = seg.ub - seg.ua, alpha = law.alpha;
+  if (!(h > 0) || !std::isfinite(h)) return std::nullopt;
+  LaSegmentKernel k;
+  k.alpha = alpha;
+  k.phi0 = seg.phi_a;
+  k.delta = seg.turning(law);
+  if (!std::isfinite(k.delta) || !std::isfinite(seg.phi_a)) return std::nullopt;
+  LaKernelValue v;
+  double extra = 0;
+  if (alpha == 0) {
+    v = k.evaluate(seg.qb - seg.qa);  // b = log(κb/κa)
+  } else {
+    const double ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);  // the plain form's q
+    // log(qb/qa): log1p of the relative change near 1 (no cancellation), the ratio itself beyond
+    // (log1p(z) at z ≈ −1 keeps only the digits of 1 + z).
+    const auto log_ratio = [&] {
+      const double z = law.relative_t(seg.qa, seg.qb);
+      return std::abs(z) <= 0.5 ? std::log1p(z) : std::log(tb / ta);
+    };
+    if (ta == 0 && tb == 0) return LaSegmentIntegral{std::polar(h, seg.phi_a), 0.0};  // a line (α < 0)
+    if (alpha == -1) {  // q = κ per unit u: A and Δ of the unit interval
+      k.delta = 0.5 * h * (ta + tb);
+      v = k.evaluate(0.5 * h * (tb - ta));
+    } else if (alpha > 0) {
+      v = k.evaluate(log_ratio());  // log(qb/qa), scale-free
+    } else if (alpha > -kLaKernelSmallAlpha && ta * tb > 0) {
+      // Small |α| without inflection: the offset variables, shape a = Δ tanh(log(qb/qa)/2).
+      v = k.evaluate(k.delta * std::tanh(0.5 * log_ratio()));
+    } else {
+      const double scale = std::exp(-alpha * std::log(h));  // q per unit u → per unit of [0, 1]
+      const double qa = ta * scale, qb = tb * scale, p = 1 - 1 / alpha;
+      v = k.evaluate_q(qa, qb);
+      // φ's total variation: |F(q)| = |q|^p/|p| from the zero of q (F(0) = 0 for α < 0) to each end,
+      // or |Δ| when q keeps its sign.
+      const double variation = ta * tb < 0 ? (std::pow(std::abs(qa), p) + std::pow(std::abs(qb), p)) / std::abs(p)
+                                            : std::abs(k.delta);
+      extra = 2 * DBL_EPSILON / std::abs(alpha) * variation * h;
+    }
+  }
+  evaluations += k.evaluations;
+  if (!v.ok || !std::isfinite(v.I.real()) || !std::isfinite(v.I.imag()) || !std::isfinite(extra)) return std::nullopt;
+  return LaSegmentIntegral{h * v.I, kLaKernelError * h + extra};
+}
+
 
 // v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
 std::complex<double> power_limit_integral(double delta, double p, long& evaluations) {

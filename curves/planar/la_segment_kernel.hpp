@@ -17,12 +17,20 @@
 //   lac::LaKernelValue v = k.evaluate(0.2);   // v.integral, v.d_integral, v.qa, v.qb
 #include <complex>
 #include <limits>
+#include <optional>
+
+#include "lac/curves/planar/detail/linear_q.hpp"
 
 namespace lac {
 
 /// Below this |α| (α ≠ 0) a shape without a zero of q on [0, 1] is evaluated in the variables of
 /// the α = 0 law (la_law.hpp's offset form).
 inline constexpr double kLaKernelSmallAlpha = 0.05;
+
+/// The kernel's accuracy: |I − ∫₀¹e^{iφ}| ≤ kLaKernelError (relative to ∫₀¹|e^{iφ}| = 1), measured
+/// against long-double references (docs/g1_hermite.md, tests/curves/la_segment_kernel_test.cpp);
+/// the rounding of φ itself (ε·max|φ|) comes on top.
+inline constexpr double kLaKernelError = 1e-13;
 
 /// One evaluation of the kernel at a shape x.
 struct LaKernelValue {
@@ -44,7 +52,25 @@ struct LaSegmentKernel {
   long budget = std::numeric_limits<long>::max();
   bool exhausted() const { return alpha < 0 && evaluations >= budget; }
   LaKernelValue evaluate(double x);
+  /// α < 0, α ≠ −1 (not evaluated otherwise): the segment given by its q (plain form of
+  /// la_law.hpp, per unit u) at u = 0 and 1 instead of a shape, with `delta` = F[qa, qb] its
+  /// turning; dI is 0. (For α < 0 the shape a is singular where Δ = 0, the antisymmetric S.)
+  LaKernelValue evaluate_q(double qa, double qb);
 };
+
+/// ∫ e^{iφ(u)} du over a segment in linear-q form with a bound on its error.
+struct LaSegmentIntegral {
+  std::complex<double> value;
+  /// kLaKernelError·(ub − ua), plus, where the segment is handed to the kernel as q values at
+  /// α < 0 (evaluate_q), the effect of their rounding (relative ε on q is ε/|α| on κ) over the
+  /// turning: 2ε/|α|·(total variation of φ)·(ub − ua). The rounding of φ itself is not included.
+  double error = 0;
+};
+
+/// That integral over any [ua, ub], either form of the law, by the kernel (normalized to u ∈ [0, 1]);
+/// `evaluations` counts its kernel evaluations. nullopt where the kernel does not evaluate it (a
+/// piece past its caps, data out of the double range): use a quadrature method there.
+std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail::LinearQ& seg, long& evaluations);
 
 /// ∫₀¹ e^{iΔv^p} dv for 0 < p < 1: the limit shape of α > 1 as the shape variable goes to ±∞
 /// (docs/g1_hermite.md "Proofs of no solution"); adds its kernel evaluations to `evaluations`.

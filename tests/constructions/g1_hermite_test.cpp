@@ -12,6 +12,7 @@
 #include <string>
 
 #include "lac/curves/planar/detail/linear_q.hpp"
+#include "lac/curves/planar/la_segment_kernel.hpp"
 #include "tests/support/g1_problem_set.hpp"
 #include "tests/support/input_error.hpp"
 #include "tests/support/reference_csv.hpp"
@@ -87,14 +88,15 @@ TEST(G1Hermite, ClothoidMatchesMpmathReferenceOnAll2000) {
   EXPECT_LE(worst_kappa, kReferenceTol);
 }
 
-// Every α: usable solutions pass the independent checks; refusals carry their proof; α < 0 solves all.
-// The curve a solve returns, evaluated by LaSegment's default integrator, must end at p1 as well:
-// solutions whose chord lies near a tangent have end-curvature ratios up to ~1e6 (α > 0: q's zero
-// just beyond an end; α = 0: κ ∝ e^(bu) with large |b|), where equal panels in u missed p1 by up to
-// 6e-4 (with status tolerance_not_met) before the integrator cut such segments toward the steep end.
+// The curve a solve returns, evaluated by LaSegment's default integrator (the segment kernel the
+// solver itself uses), ends at p1 within 1e-12 of the chord at every α, including steep solutions
+// (chord near a tangent: end-curvature ratios up to ~1e6; α > 0: q's zero just beyond an end;
+// α = 0: κ ∝ e^(bu) with large |b|). The graded fast path it replaced missed p1 by up to 4.9e-7 at
+// α = −0.1 and 6e-4 (tolerance_not_met) on steep α > 0 solutions.
 TEST(G1Hermite, SampledCurveReachesP1OnSteepSolutions) {
   const auto set = test::g1_problem_set(300, 20261124);
-  for (double alpha : {0.0, 0.1, 0.5, 1.0, 2.0, 3.0}) {
+  double worst = 0;
+  for (double alpha : {-3.0, -2.0, -1.0, -0.5, -0.3, -0.1, -0.01, 0.0, 0.01, 0.1, 0.5, 1.0, 2.0, 3.0}) {
     int checked = 0;
     for (size_t i = 0; i < set.size(); ++i) {
       const G1HermiteProblem p{{0, 0}, 2 * set[i].theta0, {1, 0}, 2 * set[i].theta1, alpha};
@@ -105,10 +107,14 @@ TEST(G1Hermite, SampledCurveReachesP1OnSteepSolutions) {
       ++checked;
       const PositionResult end = position_at(r.curve, r.curve.length());
       EXPECT_EQ(end.status, Status::ok) << "alpha " << alpha << " i " << i << ": " << end.message;
-      EXPECT_LE(std::abs(end.point.position - p.p1), 1e-11) << "alpha " << alpha << " i " << i;
+      // 1e-12 of the chord, and the kernel's error per unit length on loops many chords long.
+      const double bound = 1e-12 + 2 * kLaKernelError * r.curve.length();
+      EXPECT_LE(std::abs(end.point.position - p.p1), bound) << "alpha " << alpha << " i " << i << " length " << r.curve.length();
+      worst = std::max(worst, std::abs(end.point.position - p.p1) / bound);
     }
     EXPECT_GE(checked, 40) << "alpha " << alpha;
   }
+  std::cout << "worst end miss / bound " << worst << "\n";
 }
 
 TEST(G1Hermite, EveryAlphaVerifiedByTanhSinh) {

@@ -156,25 +156,26 @@ TEST(PlanarCurve, ReversedIsTheSameCurveBackwards) {
   }
 }
 
-// A piece the fast path cannot resolve (> 1024 rad between two samples near the end of a spiral
-// whose κ grows like e^(11u)) flags those samples only: they hold the last good sample's position
-// (the point they were to be integrated from) with an infinite estimate; the samples before them
-// and those of the next segment (integrated from its own start) are computed.
+// A piece neither the segment kernel nor the graded fast path resolves (between two samples near
+// the end of a spiral whose κ grows like e^(25u), turning 7e10 rad) flags those samples only: they
+// hold the last good sample's position (the point they were to be integrated from) with an
+// infinite estimate; the samples before them and those of the next segment (integrated from its own
+// start) are computed, and agree with rk45 wherever rk45 itself succeeds.
 TEST(PlanarCurve, FailedSamplesAreFlaggedAndDoNotShiftOthers) {
   const LaSegment a(LaLaw{-1.0}, 0.0, 1.0, 1.0, 2.0, 0.0);
-  const LaSegment spiral(LaLaw{0.0, 1.0}, 0.0, 1.0, 0.0, 11.0, 0.0, Placement{{1, 0}, 1.0, {1, 0}});
+  const LaSegment spiral(LaLaw{0.0, 1.0}, 0.0, 1.0, 0.0, 25.0, 0.0, Placement{{1, 0}, 1.0, {1, 0}});
   const LaSegment b(LaLaw{-1.0}, 0.0, 1.0, 1.0, 2.0, 0.0, Placement{{5, 5}, 1.0, {0, 1}});
   const PlanarCurve c({a, spiral, b});
   const auto pts = c.sample(31);
   const auto reference = c.sample(31, Rk45{});
-  int flagged = 0;
+  int flagged = 0, computed = 0;
   std::complex<double> last_good;
   for (size_t i = 0; i < pts.size(); ++i) {
     const auto& p = pts[i];
     SCOPED_TRACE("s = " + std::to_string(p.point.s));
-    ASSERT_EQ(reference[i].status, Status::ok) << reference[i].message;
     if (p.status == Status::ok) {
-      EXPECT_LT(std::abs(p.point.position - reference[i].point.position), 1e-10);
+      if (reference[i].status == Status::ok) EXPECT_LT(std::abs(p.point.position - reference[i].point.position), 1e-10);
+      ++computed;
       last_good = p.point.position;
       continue;
     }
@@ -186,6 +187,7 @@ TEST(PlanarCurve, FailedSamplesAreFlaggedAndDoNotShiftOthers) {
     ++flagged;
   }
   EXPECT_GE(flagged, 1);
+  EXPECT_GE(computed, 21);  // segments a and b, and the spiral's first samples
 }
 
 TEST(PlanarCurve, InvalidInput) {
