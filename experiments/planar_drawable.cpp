@@ -6,10 +6,9 @@
 // planar_drawable.{md,csv}, heatmaps are drawn by experiments/figures/planar_drawable.py.
 //
 // The sweep runs on all cores (TBB parallel_for; every cell is independent and written into its
-// own slot, so the output does not depend on the thread count: check with --threads 1). For a
-// cluster, --shard K/N computes the K-th of N contiguous blocks of cells into
-// <out>/planar_drawable_parts/part_K_of_N.csv (e.g. as a Slurm job array, K = $SLURM_ARRAY_TASK_ID),
-// and --merge N combines the N parts into the same outputs as a single run.
+// own slot, so the output does not depend on the thread count: check with --threads 1). Beyond one
+// machine the same cells run on a Dask cluster (python/examples/sweeps_dask.py, docs/python.md),
+// whose rows are identical to this program's.
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -51,7 +50,7 @@ struct Outcome {
   int iterations = 0;
 };
 
-/// Valid cells (b0 + b2 < π) of all panels in a fixed order; the sharding splits this list.
+/// Valid cells (b0 + b2 < π) of all panels in a fixed order (the row index of the outputs).
 std::vector<Cell> all_cells(int grid) {
   std::vector<Cell> cells;
   for (int p = 0; p < static_cast<int>(std::size(kPanels)); ++p)
@@ -153,7 +152,7 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
       "needed Λ0 lies closer to Λmax than double precision resolves (not_converged, counted as other status) "
       "or the tangents lose accuracy (tolerance_not_met). α < 0 (finite length up to the inflection) and α > 1 (ρ → 0 at the start) "
       "lose the triangles whose start angle is too close to the turning, i.e. one leg much shorter than the "
-      "other. A finer grid: --grid 200 (or split it with --shard K/N and --merge N).";
+      "other. A finer grid: --grid 200 (or on a Dask cluster: python/examples/sweeps_dask.py --grid 200).";
   lac::io::write_result_table(out, "planar_drawable", doc, t);
   lac::io::Table tt;
   tt.columns = {"cells", "threads", "seconds"};
@@ -162,88 +161,35 @@ void write_outputs(const fs::path& out, const std::string& cmd, int grid, const 
   tdoc.title = doc.title + " — times";
   tdoc.command = cmd;
   tdoc.description =
-      "Wall time of the whole grid of planar_drawable.md (or of the --merge step, 0 s), a timing only for planning "
+      "Wall time of the whole grid of planar_drawable.md, a timing only for planning "
       "larger grids; it varies between runs.";
   lac::io::write_result_table(out, "planar_drawable_timing", tdoc, tt);
   std::cout << t.markdown();
 }
 
-std::vector<std::string> read_part(const fs::path& file) {
-  std::ifstream f(file);
-  if (!f) throw std::runtime_error("missing shard file " + file.string());
-  std::vector<std::string> rows;
-  std::string line;
-  while (std::getline(f, line))
-    if (!line.empty() && line[0] != '#' && line.rfind("index,", 0) != 0) rows.push_back(line);
-  return rows;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Drawable-region maps of planar G1 / compound-rhythm LA segments (TBB, shardable)"};
+  CLI::App app{"Drawable-region maps of planar G1 / compound-rhythm LA segments (TBB)"};
   std::string out = "results";
   int grid = 36;
-  std::string shard;
-  int merge = 0;
   int threads = 0;
   app.add_option("--out", out, "Output folder")->capture_default_str();
   app.add_option("--grid", grid, "Cells per base-angle axis (default 36; 200 for a fine map)")->capture_default_str()->check(CLI::Range(4, 2000));
-  app.add_option("--shard", shard, "K/N: compute only block K (0-based) of N into <out>/planar_drawable_parts/");
-  app.add_option("--merge", merge, "Combine the N part files of --shard K/N runs (same --grid) into the outputs")->check(CLI::Range(1, 100000));
   app.add_option("--threads", threads, "Worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
   CLI11_PARSE(app, argc, argv);
   const fs::path dir(out);
   fs::create_directories(dir);
   const std::string cmd = lac::io::command_line(argc, argv);
   const std::vector<Cell> cells = all_cells(grid);
-  const fs::path parts = dir / "planar_drawable_parts";
-
-  if (merge > 0) {
-    std::vector<std::string> rows;
-    for (int k = 0; k < merge; ++k) {
-      auto part = read_part(parts / ("part_" + std::to_string(k) + "_of_" + std::to_string(merge) + ".csv"));
-      rows.insert(rows.end(), part.begin(), part.end());
-    }
-    if (rows.size() != cells.size()) {
-      std::cerr << "merge: " << rows.size() << " rows in the parts, " << cells.size() << " cells expected for --grid " << grid
-                << "\n";
-      return 2;
-    }
-    for (size_t k = 0; k < rows.size(); ++k)
-      if (std::stoul(rows[k].substr(0, rows[k].find(','))) != k) {
-        std::cerr << "merge: row " << k << " out of order or missing\n";
-        return 2;
-      }
-    write_outputs(dir, cmd, grid, rows, 0, 0);
-    return 0;
-  }
-
-  size_t begin = 0, end = cells.size();
-  int shard_k = -1, shard_n = 0;
-  if (!shard.empty()) {
-    if (std::sscanf(shard.c_str(), "%d/%d", &shard_k, &shard_n) != 2 || shard_n < 1 || shard_k < 0 || shard_k >= shard_n) {
-      std::cerr << "--shard must be K/N with 0 <= K < N\n";
-      return 2;
-    }
-    begin = cells.size() * static_cast<size_t>(shard_k) / static_cast<size_t>(shard_n);
-    end = cells.size() * static_cast<size_t>(shard_k + 1) / static_cast<size_t>(shard_n);
-  }
   const int used_threads = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(used_threads));
-  std::vector<std::string> rows(end - begin);
+  std::vector<std::string> rows(cells.size());
   lac::io::Stopwatch clock;
-  tbb::parallel_for(begin, end, [&](size_t k) { rows[k - begin] = row_text(k, cells[k], grid, solve_cell(cells[k], grid)); });
+  tbb::parallel_for(size_t{0}, cells.size(), [&](size_t k) { rows[k] = row_text(k, cells[k], grid, solve_cell(cells[k], grid)); });
   const double seconds = clock.seconds();
   std::cerr << "planar_drawable: " << rows.size() << " cells in " << seconds << " s on " << used_threads << " threads\n";
 
-  if (shard_n > 0) {
-    fs::create_directories(parts);
-    std::ofstream f(parts / ("part_" + std::to_string(shard_k) + "_of_" + std::to_string(shard_n) + ".csv"));
-    f << "# written by: " << cmd << "\n" << kHeader << "\n";
-    for (const auto& r : rows) f << r << "\n";
-    return 0;
-  }
   write_outputs(dir, cmd, grid, rows, seconds, used_threads);
   return 0;
 }
