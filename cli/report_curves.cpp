@@ -55,14 +55,9 @@ Json planar_point(const PositionResult& p) {
 
 void add_planar_points(Json& r, const PlanarCurve& curve, int n, const AnyQuadrature& integrator) {
   if (n == 0 || curve.segments().empty()) return;
-  const std::vector<PositionResult> pts = std::visit(
-      [&](const auto& m) {
-        if constexpr (QuadratureMethod<std::decay_t<decltype(m)>>)
-          return curve.sample(n, m);
-        else
-          return curve.sample(n, GkTanhSinh{});
-      },
-      integrator);
+  // Every registered method samples by itself (igf: its closed form per segment, planar_curve.hpp).
+  const std::vector<PositionResult> pts =
+      std::visit([&](const auto& m) { return polyline(curve, 0.0, curve.length(), n, m); }, integrator);
   Json arr = Json::array();
   for (const PositionResult& p : pts) arr.push_back(planar_point(p));
   r["points"] = std::move(arr);

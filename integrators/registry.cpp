@@ -25,7 +25,7 @@ constexpr std::array<MethodInfo, std::variant_size_v<AnyQuadrature>> kMethods = 
     {GkTanhSinh::name, {}, "Gauss-Kronrod G10K21 (depth 4), tanh-sinh where it misses its tolerance", kGkTsOptions,
      kAnyIntegrand},
     {Igf::name, {}, "closed form through the complex incomplete gamma function", kIgfOptions,
-     "planar LA curves in standard form only"},
+     "planar LA curves and segments (each piece in standard form); not quadratic curves"},
 }};
 
 // kMethods[i] describes alternative i of AnyQuadrature.

@@ -31,7 +31,7 @@ inline constexpr std::string_view kAnyIntegrand = "any integrand (planar LA and 
 using AnyQuadrature = std::variant<Rk4, Rk45, GaussKronrod, GaussLegendre, GkTanhSinh, Igf>;
 
 /// rk4, rk45, gauss-kronrod (alias gk), gauss-legendre, gk-tanh-sinh, igf: names, aliases, options
-/// with their defaults and where each applies (igf: planar LA curves in standard form only).
+/// with their defaults and where each applies (igf: planar LA curves and segments, through their standard form).
 std::span<const MethodInfo> quadrature_methods();
 
 /// The method `name` (or alias) with `options` applied and validated. InputError naming

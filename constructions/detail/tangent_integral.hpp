@@ -9,24 +9,11 @@
 
 #include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/curves/planar/la_segment.hpp"
+#include "lac/curves/planar/la_segment_igf.hpp"
 #include "lac/integrators/registry.hpp"
 
 namespace lac::detail {
 
-/// igf on segment data: each part of the segment on one side of a zero of q is one standard-form
-/// piece, C(θ1) − C(θ0) by the closed form. Next to a zero of q (α < 0: an inflection, ρ = ∞) the
-/// closed form's variable θ cannot resolve the arc length (U = 1 + (α−1)Λθ → 0 there and
-/// s_max − s ∝ U^(α/(α−1)); the zero itself is outside igf's open θ domain), so the part of a
-/// piece where U < kIgfMinU is integrated by the graded Gauss–Legendre rule instead (the same
-/// segment kernel as gauss-legendre), and so is a part that has no standard form in double
-/// precision (|q| at its anchor so small that ρ overflows, e.g. a subnormal end curvature). A zero
-/// of q within rounding of an end leaves an empty part, which contributes nothing. InputError for
-/// data LaSegment refuses.
-IntegralResult<std::complex<double>> integrate_tangent_igf(const LaLaw& law, const LinearQ& seg, const Igf& method);
-
-/// U = 1 + (α−1)Λθ at which an igf piece stops short of a zero of q (above: the θ rounding, ε/U
-/// relative in U, moves the arc length by ≲ 50ε of the piece for α ∈ [−5, 0)).
-inline constexpr double kIgfMinU = 1e-3;
 
 /// The integral of trial data (possibly non-finite or not a valid segment) with one method of the
 /// registry, chosen once: NaN when the method fails (an unusable status, or data no segment has),

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/la_segment_igf.hpp"
 
 namespace lac {
 
@@ -120,6 +121,34 @@ std::vector<double> PlanarCurve::extreme_candidates(size_t k) const {
   }
   // Ascending; duplicates (a candidate at a piece end) cost an empty integral only.
   std::sort(out.begin(), out.end());
+  return out;
+}
+
+PositionResult position_at(const PlanarCurve& curve, double s, const Igf& method) {
+  curve.check_s(s, "s");
+  const size_t k = curve.segment_at(s);
+  PositionResult r = position_at(curve.segments()[k], curve.local_s(k, s), method);
+  const std::complex<double> position = r.point.position;
+  r.point = curve.frame_at(s);
+  r.point.position = position;
+  return r;
+}
+
+std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const Igf& method) {
+  method.validate();
+  if (n < 2 || n > 1'000'000) throw_input_error("PlanarCurve polyline", "points", n, "[2, 1000000]");
+  curve.check_s(s0, "s0");
+  curve.check_s(s1, "s1");
+  std::vector<PositionResult> out(static_cast<size_t>(n));
+  const double lo = std::min(s0, s1), hi = std::max(s0, s1);
+  long evaluations = 0;
+  for (int k = 0; k < n; ++k) {
+    const double s = k + 1 == n ? s1 : std::clamp(s0 + (s1 - s0) * static_cast<double>(k) / (n - 1), lo, hi);
+    PositionResult& r = out[static_cast<size_t>(k)];
+    r = position_at(curve, s, method);
+    evaluations += r.evaluations;
+    r.evaluations = evaluations;
+  }
   return out;
 }
 

@@ -16,6 +16,7 @@
 
 #include "lac/curves/curve.hpp"
 #include "lac/curves/planar/la_segment.hpp"
+#include "lac/integrators/igf.hpp"
 
 namespace lac {
 
@@ -104,6 +105,11 @@ PositionResult position_at(const PlanarCurve& curve, double s, const M& method =
 /// The pieces share one evaluation budget; PositionResult says what a failed point holds.
 template <QuadratureMethod M>
 std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const M& method);
+
+/// The same by igf (integrators/igf.hpp: the closed form of each segment's standard-form pieces,
+/// la_segment_igf.hpp), each point from the start of its segment; `evaluations` cumulative.
+PositionResult position_at(const PlanarCurve& curve, double s, const Igf& method);
+std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const Igf& method);
 
 }  // namespace lac
 

@@ -68,17 +68,10 @@ py::object planar_columns(const std::vector<lac::PositionResult>& pts, const std
   return columns(d);
 }
 
-/// A quadrature method for positions of a PlanarCurve (igf is for standard forms only: gk-tanh-sinh).
+/// The method for positions of a PlanarCurve: every registered one (igf by its closed form per segment).
 template <class F>
 auto with_method(const lac::AnyQuadrature& q, F&& f) {
-  return std::visit(
-      [&](const auto& m) {
-        if constexpr (lac::QuadratureMethod<std::decay_t<decltype(m)>>)
-          return f(m);
-        else
-          return f(lac::GkTanhSinh{});
-      },
-      q);
+  return std::visit([&](const auto& m) { return f(m); }, q);
 }
 
 py::object eval_planar(const Curve& c, py::array_t<double, py::array::c_style | py::array::forcecast> s_in,

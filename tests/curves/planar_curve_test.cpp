@@ -217,3 +217,24 @@ TEST(Numeric, IntervalAndWrapAngle) {
 
 }  // namespace
 }  // namespace lac
+
+namespace lac {
+namespace {
+// igf samples a PlanarCurve by its closed form per segment (la_segment_igf.hpp), each point from its
+// segment's start: the same points as the segment kernel within both estimates.
+TEST(PlanarCurve, IgfSamplesByItsClosedForm) {
+  for (const PlanarCurve& c : curves()) {
+    const auto by_igf = polyline(c, 0.0, c.length(), 17, Igf{});
+    const auto by_kernel = c.sample(17);
+    ASSERT_EQ(by_igf.size(), by_kernel.size());
+    for (size_t i = 0; i < by_igf.size(); ++i) {
+      SCOPED_TRACE("point " + std::to_string(i));
+      ASSERT_TRUE(usable(by_igf[i].status)) << by_igf[i].message;
+      EXPECT_LE(std::abs(by_igf[i].point.position - by_kernel[i].point.position),
+                by_igf[i].error_estimate + by_kernel[i].error_estimate + 1e-14 * (1 + c.length()));
+    }
+    EXPECT_GT(by_igf.back().evaluations, 0);
+  }
+}
+}  // namespace
+}  // namespace lac

@@ -202,7 +202,7 @@ TEST(Igf, Registry) {
   EXPECT_THROW(make_quadrature("igf", QuadratureOptions{std::nullopt, -1.0}), InputError);
   const MethodInfo* info = find_method(quadrature_methods(), "igf");
   ASSERT_NE(info, nullptr);
-  EXPECT_EQ(info->applies_to, "planar LA curves in standard form only");
+  EXPECT_EQ(info->applies_to, "planar LA curves and segments (each piece in standard form); not quadratic curves");
 }
 
 }  // namespace

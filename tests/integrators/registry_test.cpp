@@ -65,7 +65,7 @@ TEST(QuadratureRegistry, ListsEveryMethodOnceInVariantOrder) {
   for (std::string_view name : {"rk4", "rk45", "gauss-kronrod", "gauss-legendre", "gk-tanh-sinh", "igf"})
     EXPECT_TRUE(names.count(name)) << name;
   EXPECT_EQ(name_of(make_quadrature("gk")), "gauss-kronrod");
-  EXPECT_EQ(find_method(methods, "igf")->applies_to, "planar LA curves in standard form only");
+  EXPECT_EQ(find_method(methods, "igf")->applies_to, "planar LA curves and segments (each piece in standard form); not quadratic curves");
   EXPECT_EQ(method_names_text(methods), "rk4, rk45, gauss-kronrod (alias gk), gauss-legendre, gk-tanh-sinh, igf");
 }
 
