@@ -53,8 +53,10 @@ void conclude(Intersections& out, double L, const GeometryOptions& o, Status cap
   const double window = 1e-8 * L;
   for (const Intersection& p : out.points) {
     if (!merged.empty() && std::abs(p.s - merged.back().s) <= window && std::abs(p.t - merged.back().t) <= window) {
-      if (p.kind == IntersectionKind::tangent) merged.back().kind = IntersectionKind::tangent;
-      merged.back().error_estimate = std::max(merged.back().error_estimate, p.error_estimate);
+      // Keep the better-known of the two (e.g. a joint: the next segment's start is exact).
+      const bool tangent = p.kind == IntersectionKind::tangent || merged.back().kind == IntersectionKind::tangent;
+      if (p.error_estimate < merged.back().error_estimate) merged.back() = p;
+      if (tangent) merged.back().kind = IntersectionKind::tangent;
       continue;
     }
     merged.push_back(p);

@@ -189,6 +189,41 @@ TEST(GeometryIntersectCurves, TangentSegmentAgreesWithTheLine) {
   }
 }
 
+// The spiral and its mirror image about its tangent line at s0: they touch at s0, meet on the
+// line where the spiral crosses it (s = t), and elsewhere in mirror pairs (s, t) and (t, s).
+TEST(GeometryIntersectCurves, MirrorImageAboutATangentLine) {
+  const PlanarCurve c = test::clothoid_spiral();
+  const double L = c.length(), s0 = 6.0;
+  const PositionResult p = position_at(c, s0);
+  const std::complex<double> T = std::polar(1.0, p.point.theta);
+  const Intersections x = intersect_curves(c, mirrored(c, p.point.position, T));
+  ASSERT_EQ(x.status, Status::ok) << x.message;
+  const Intersections line = intersect_line(c, p.point.position, T);
+  std::vector<double> on_line, line_s;
+  int touches = 0;
+  for (const Intersection& q : x.points) {
+    if (q.kind == IntersectionKind::tangent) {
+      ++touches;
+      EXPECT_NEAR(q.s, s0, 1e-6 * L);
+      EXPECT_NEAR(q.t, s0, 1e-6 * L);
+      continue;
+    }
+    if (std::abs(q.s - q.t) <= 1e-9 * L) {
+      on_line.push_back(q.s);
+      continue;
+    }
+    int mates = 0;  // its mirror pair
+    for (const Intersection& r : x.points) mates += std::abs(r.s - q.t) <= 1e-10 * L && std::abs(r.t - q.s) <= 1e-10 * L;
+    EXPECT_EQ(mates, 1) << "s = " << q.s;
+  }
+  EXPECT_EQ(touches, 1);
+  for (const Intersection& q : line.points)
+    if (q.kind == IntersectionKind::crossing) line_s.push_back(q.s);
+  ASSERT_EQ(on_line.size(), line_s.size());
+  for (size_t j = 0; j < line_s.size(); ++j) EXPECT_NEAR(on_line[j], line_s[j], 1e-10 * L);
+  EXPECT_GE(x.points.size(), 10u);
+}
+
 TEST(GeometryIntersect, CapsAndBadInput) {
   const PlanarCurve c = test::log_spiral();
   // A curve along itself: near-parallel pairs everywhere; the search stops with a status that
