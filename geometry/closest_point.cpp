@@ -59,8 +59,9 @@ Candidate polish(detail::SpanTracer& tr, const detail::Span& sp, std::complex<do
   if (g0 < 0 && g1 > 0) {
     const auto g = [&](double u) { return g_of(tr.trace(sp.seg, c, u)); };
     std::uintmax_t iterations = kPolishIterations;
-    const auto tol = [](double a, double b) {
-      return std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b));
+    const double floor = std::numeric_limits<double>::epsilon() * (sp.u1 - sp.u0);  // u near 0
+    const auto tol = [floor](double a, double b) {
+      return std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b)) + floor;
     };
     const auto r = boost::math::tools::toms748_solve(g, sp.u0, sp.u1, g0, g1, tol, iterations);
     consider(tr.trace(sp.seg, c, r.first));
@@ -88,11 +89,8 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
     return out;
   };
 
-  std::vector<detail::Span> store = tr.cover(kMaxTurn, kMinSpans);
+  std::vector<detail::Span> store = tr.cover(kMaxTurn, kMinSpans, options.max_spans);
   if (tr.failed()) return finish(tr.status(), "closest_point: " + tr.message());
-  if (static_cast<long>(store.size()) > options.max_spans)
-    return finish(Status::max_iterations, "closest_point: covering the curve needs " + std::to_string(store.size()) +
-                                              " spans, more than max_spans = " + std::to_string(options.max_spans));
 
   // Best point so far: a span centre (not polished) or a polished minimum of a span.
   Candidate best;

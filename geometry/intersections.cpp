@@ -28,6 +28,7 @@ constexpr int kMinSpans = 16;
 constexpr double kLeafFraction = 1e-4;  // near-parallel pairs are halved down to this × length
 constexpr int kGroupSamples = 33;
 constexpr size_t kMaxLeaves = 20000;
+constexpr double kMaxInitialPairs = 1e8;  // overlap tests of the initial spans of both curves
 constexpr int kNewtonIterations = 40;
 constexpr std::uintmax_t kRootIterations = 100;
 
@@ -35,14 +36,15 @@ double cross(cplx a, cplx b) { return a.real() * b.imag() - a.imag() * b.real();
 double dot(cplx a, cplx b) { return (std::conj(a) * b).real(); }
 cplx unit(cplx z) { return z / std::abs(z); }
 
-bool u_close(double a, double b) {
-  return std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b));
-}
-
+// TOMS 748 on [lo, hi] to 4 ulps of u (and ε of the bracket's width where u is near 0).
 template <class F>
 double root_in(F&& f, double lo, double hi, double flo, double fhi) {
   std::uintmax_t iterations = kRootIterations;
-  const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi, [](double a, double b) { return u_close(a, b); }, iterations);
+  const double eps = std::numeric_limits<double>::epsilon(), floor = eps * (hi - lo);
+  const auto close = [eps, floor](double a, double b) {
+    return std::abs(b - a) <= 4 * eps * std::max(std::abs(a), std::abs(b)) + floor;
+  };
+  const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi, close, iterations);
   return std::abs(f(r.first)) <= std::abs(f(r.second)) ? r.first : r.second;
 }
 
@@ -160,8 +162,8 @@ struct SpanTree {
   std::vector<Span> spans;
   std::vector<std::optional<std::pair<size_t, size_t>>> children;
   SpanTree(const PlanarCurve& c, const GaussLegendre& m) : tracer(c, m) {}
-  void init() {
-    spans = tracer.cover(kMaxTurn, kMinSpans);
+  void init(long cap) {
+    spans = tracer.cover(kMaxTurn, kMinSpans, cap);
     children.assign(spans.size(), std::nullopt);
   }
   std::pair<size_t, size_t> halves(size_t i) {
@@ -303,9 +305,9 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
   b.check_s(0.0, "b");
   const double L = a.length(), scale = std::max(a.length(), b.length()), tol = options.tolerance * scale;
   SpanTree A(a, options.method), B(b, options.method);
-  A.init();
+  A.init(options.max_spans);
   if (A.tracer.failed()) return failure(A.tracer.status(), "intersect_curves: a: " + A.tracer.message(), A.tracer);
-  B.init();
+  B.init(options.max_spans - static_cast<long>(A.spans.size()));
   if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   Intersections out;
   PairSolver solver{A, B, tol, std::sqrt(options.tolerance), out};
@@ -321,6 +323,10 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
     return finish(Status::max_iterations, "intersect_curves: covering the curves needs more than max_spans = " +
                                               std::to_string(options.max_spans) + " spans");
 
+  if (static_cast<double>(A.spans.size()) * static_cast<double>(B.spans.size()) > kMaxInitialPairs)
+    return finish(Status::max_iterations, "intersect_curves: " + std::to_string(A.spans.size()) + " × " +
+                                              std::to_string(B.spans.size()) + " initial span pairs, more than " +
+                                              format_number(kMaxInitialPairs) + " to test");
   std::vector<std::pair<size_t, size_t>> stack, leaves;
   for (size_t i = A.spans.size(); i-- > 0;)
     for (size_t j = B.spans.size(); j-- > 0;)

@@ -84,17 +84,28 @@ std::pair<Span, Span> SpanTracer::split(const Span& span) {
   return {make(span.seg, span.u0, span.uc, c, span.depth + 1), make(span.seg, span.uc, span.u1, c, span.depth + 1)};
 }
 
-std::vector<Span> SpanTracer::cover(double max_turn, int min_count) {
+std::vector<Span> SpanTracer::cover(double max_turn, int min_count, long cap) {
   std::vector<Span> out;
   const double L = curve_.length();
-  for (size_t k = 0; k < curve_.segments().size(); ++k) {
-    const LaSegment& seg = curve_.segments()[k];
+  std::vector<long> counts;
+  double total = 0;
+  for (const LaSegment& seg : curve_.segments()) {
     double variation = std::abs(seg.turning());
     if (const auto ui = seg.inflection_u(); ui && *ui > seg.ua() && *ui < seg.ub())
       variation = std::abs(seg.phi_at(*ui) - seg.phi_a()) + std::abs(seg.phi_b() - seg.phi_at(*ui));
-    const double n_turn = std::ceil(variation / max_turn), n_len = std::ceil(seg.length() / L * min_count);
-    const double n = std::clamp(std::max(n_turn, n_len), 1.0, 1e7);
-    const long count = static_cast<long>(n);
+    const double n = std::max({std::ceil(variation / max_turn), std::ceil(seg.length() / L * min_count), 1.0});
+    total += n;
+    if (!(total <= static_cast<double>(cap))) {
+      fail(Status::max_iterations, "covering the curve needs more than " + std::to_string(cap) +
+                                       " spans of at most " + format_number(max_turn) + " rad (max_spans)");
+      return {};
+    }
+    counts.push_back(static_cast<long>(n));
+  }
+  for (size_t k = 0; k < curve_.segments().size(); ++k) {
+    const LaSegment& seg = curve_.segments()[k];
+    const long count = counts[k];
+    const double n = static_cast<double>(count);
     Known from{seg.ua(), seg.start(), 0.0};
     for (long i = 0; i < count; ++i) {
       const double u0 = i == 0 ? seg.ua() : seg.ua() + (seg.ub() - seg.ua()) * static_cast<double>(i) / n;

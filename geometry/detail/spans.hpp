@@ -75,8 +75,9 @@ class SpanTracer {
   /// The two halves of a span.
   std::pair<Span, Span> split(const Span& span);
   /// Spans covering the whole curve, each turning at most `max_turn` and at most 1/min_count of
-  /// the curve's length, their centres chained from each segment's start. Empty on failure.
-  std::vector<Span> cover(double max_turn, int min_count);
+  /// the curve's length, their centres chained from each segment's start. Empty on failure, and
+  /// with status max_iterations when more than `cap` spans would be needed.
+  std::vector<Span> cover(double max_turn, int min_count, long cap);
 
  private:
   void fail(Status s, const std::string& m) {

@@ -106,6 +106,11 @@ TEST(GeometryClosestPoint, CapAndBadInput) {
   EXPECT_TRUE(std::isfinite(r.distance));
   EXPECT_NEAR(r.distance, 0.5, 1e-12);
   EXPECT_LE(r.spans, o.max_spans);
+  // The clothoid spiral turns 31 rad: covering it takes 62 spans of 0.5 rad, more than 16.
+  o.max_spans = 16;
+  const ClosestPoint few = closest_point(test::clothoid_spiral(), {0, 0}, o);
+  EXPECT_EQ(few.status, Status::max_iterations);
+  EXPECT_NE(few.message.find("max_spans"), std::string::npos) << few.message;
   EXPECT_EQ(test::thrown_parameter([&] { closest_point(c, {NAN, 0}); }), "query");
   GeometryOptions bad;
   bad.tolerance = 0;
