@@ -193,14 +193,14 @@ struct PairSolver {
             pa.err + pb.err + std::abs(pa.p - pb.p), kind};
   }
 
-  // Newton on p_a(u) − p_b(v) = 0 inside the pair's box (extended by a tenth); true when a root
-  // in the box (to rounding) was found or shown to lie outside it.
+  // Newton on p_a(u) − p_b(v) = 0, its steps kept in the pair's box: true when it converged to a
+  // root there (the pair holds at most one: transversal). Otherwise the pair is halved further.
   bool newton(const Span& sa, const Span& sb) {
     const LaSegment &ga = A.tracer.curve().segments()[sa.seg], &gb = B.tracer.curve().segments()[sb.seg];
     const double la = ga.scale(), lb = gb.scale();
     const double wa = sa.u1 - sa.u0, wb = sb.u1 - sb.u0;
-    const double alo = std::max(ga.ua(), sa.u0 - 0.1 * wa), ahi = std::min(ga.ub(), sa.u1 + 0.1 * wa);
-    const double blo = std::max(gb.ua(), sb.u0 - 0.1 * wb), bhi = std::min(gb.ub(), sb.u1 + 0.1 * wb);
+    const double alo = std::max(ga.ua(), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(), sa.u1 + 1e-9 * wa);
+    const double blo = std::max(gb.ua(), sb.u0 - 1e-9 * wb), bhi = std::min(gb.ub(), sb.u1 + 1e-9 * wb);
     // Start: the crossing of the tangent lines at the centres.
     const cplx c = sb.pc - sa.pc, ta = sa.tc, tb = -sb.tc;
     const double det = cross(ta, tb);
@@ -220,10 +220,8 @@ struct PairSolver {
       v = nv;
       if (small || std::abs(F) <= std::numeric_limits<double>::epsilon() * std::abs(pa.p)) {
         const Known qa = A.tracer.trace(sa.seg, sa.anchor(), u), qb = B.tracer.trace(sb.seg, sb.anchor(), v);
-        if (!(std::abs(qa.p - qb.p) <= tol + qa.err + qb.err)) return false;
-        const double slack_a = 1e-9 * wa, slack_b = 1e-9 * wb;
-        if (u >= sa.u0 - slack_a && u <= sa.u1 + slack_a && v >= sb.u0 - slack_b && v <= sb.u1 + slack_b)
-          out.points.push_back(make(sa, qa, sb, qb, IntersectionKind::crossing));
+        if (!(std::abs(qa.p - qb.p) <= tol + qa.err + qb.err)) return false;  // stuck at the box's edge
+        out.points.push_back(make(sa, qa, sb, qb, IntersectionKind::crossing));
         return true;
       }
     }

@@ -17,8 +17,8 @@
 // farther apart than the sum of their radii cannot meet and is dropped. A pair whose tangent
 // directions lie in disjoint cones (mod π; each span turning less than 0.5 rad) meets at most once
 // (a chord between two common points would be a mean tangent of both): Newton's method on
-// p_a(s) − p_b(t) = 0 from the crossing of the two tangent segments finds it, a root outside the
-// pair's box is left to the neighbouring pair. Other pairs are halved (the longer span) down to
+// p_a(s) − p_b(t) = 0 from the crossing of the two tangent segments, kept in the pair's box, finds
+// it; where it does not converge the pair is halved further. Other pairs are halved (the longer span) down to
 // spans of 1e-4 of the length; the near-parallel pairs left are grouped, and on each group the
 // signed distance of a from b (through the foot point on b) is sampled at 33 points:
 // a sign change is a crossing (TOMS 748), a minimum of |distance| within the touch tolerance without

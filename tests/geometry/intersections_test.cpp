@@ -61,7 +61,9 @@ TEST(GeometryIntersectLine, AllCrossingsMatchTheDenseReference) {
         worst = std::max(worst, std::abs(r.points[j].s - e[j]) / L);
         // On the line: the point is P + t D.
         EXPECT_NEAR(std::abs(r.points[j].point - (P + r.points[j].t * D)), 0.0, 1e-12 * L);
-        if (j > 0) EXPECT_LT(r.points[j - 1].s, r.points[j].s);
+        if (j > 0) {
+          EXPECT_LT(r.points[j - 1].s, r.points[j].s);
+        }
       }
     }
   }
@@ -145,10 +147,11 @@ TEST(GeometryIntersectCurves, CrossingsMatchTheDenseReference) {
       translated(scaled(test::compound(), 0.7), mid - std::complex<double>(1.5, 1.0)),
       rotated(a, 0.9, mid + std::complex<double>(0.1, 0.05))};
   const test::RefCurve ra(a, 1500, 0.01L);
-  long total = 0;
+  long total = 0, spans = 0, evaluations = 0;
   double worst = 0;
   for (const PlanarCurve& b : others) {
     const Intersections r = intersect_curves(a, b);
+    spans += r.spans, evaluations += r.evaluations;
     ASSERT_EQ(r.status, Status::ok) << r.message;
     const test::RefCurve rb(b, 1500, 0.01L);
     const std::vector<RefCrossing> e = reference_curves(ra, rb);
@@ -162,7 +165,8 @@ TEST(GeometryIntersectCurves, CrossingsMatchTheDenseReference) {
     }
   }
   EXPECT_GE(total, 10);
-  std::printf("intersect_curves: %ld crossings over 3 pairs, worst |Δs|/L = %.2e\n", total, worst);
+  std::printf("intersect_curves: %ld crossings over 3 pairs, worst |Δs|/L = %.2e; %ld spans, %ld evaluations in all\n", total,
+              worst, spans, evaluations);
 }
 
 TEST(GeometryIntersectCurves, TangentSegmentAgreesWithTheLine) {
