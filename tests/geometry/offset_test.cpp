@@ -82,8 +82,12 @@ TEST(GeometryOffset, FirstCuspMatchesTheModel) {
     if (r.s && std::isfinite(e)) {
       EXPECT_NEAR(*r.s, e, 1e-12 * t.curve.length()) << "d = " << t.d;
       // Beyond the cusp the offset runs backwards.
-      if (*r.s + 1e-6 < t.curve.length()) EXPECT_LT(offset_at(t.curve, *r.s + 1e-6, t.d).factor, 0.0);
-      if (*r.s > 1e-6 && !r.at_joint) EXPECT_GT(offset_at(t.curve, *r.s - 1e-6, t.d).factor, 0.0);
+      if (*r.s + 1e-6 < t.curve.length()) {
+        EXPECT_LT(offset_at(t.curve, *r.s + 1e-6, t.d).factor, 0.0);
+      }
+      if (*r.s > 1e-6 && !r.at_joint) {
+        EXPECT_GT(offset_at(t.curve, *r.s - 1e-6, t.d).factor, 0.0);
+      }
     }
   }
   // d = 10: 1 − dκ(0) = 1 − 10·0.2 < 0: the offset runs backwards from the start.

@@ -1,6 +1,6 @@
 #pragma once
 // An independent long-double model of a PlanarCurve for the geometry tests: the closed forms of
-// the linear-q law written again from 004 Eqs. 2–8 (plain form, α ≠ 1, or α = 0) — not the
+// the linear-q law written again from 004 Eqs. 2–8 (plain form, or α = 0) — not the
 // library's divided differences — and positions by 30-point Gauss–Legendre (Boost.Math, long
 // double) on a fine grid in u, cumulated from each segment's start. Only the segments' defining
 // data (law, u range, q at the ends, φa, placement) are read from the library's objects.
@@ -36,6 +36,7 @@ struct RefSegment {
   }
   ld F(ld x) const {
     if (alpha == 0) return sigma * std::exp(x);
+    if (alpha == 1) return std::log(std::abs(x));  // 004 Eq. 8
     return alpha / (alpha - 1) * std::pow(std::abs(x), (alpha - 1) / alpha);
   }
   ld phi(ld u) const {
