@@ -23,6 +23,7 @@ using test::ld;
 std::complex<double> to_double(cld z) { return {double(z.real()), double(z.imag())}; }
 
 TEST(GeometryEvaluate, MatchesTheLongDoubleModel) {
+  double worst = 0, worst_estimate = 0;
   for (const PlanarCurve& c : test::test_curves()) {
     const test::RefCurve ref(c, 200);
     const double L = c.length();
@@ -34,6 +35,8 @@ TEST(GeometryEvaluate, MatchesTheLongDoubleModel) {
       const ld u = ref.segs[k].u_of(ld(c.local_s(k, s)));
       const std::complex<double> p = to_double(ref.position(k, u));
       EXPECT_LE(std::abs(e.position - p), 1e-13 * L + e.error_estimate) << "s = " << s;
+      worst = std::max(worst, std::abs(e.position - p) / L);
+      worst_estimate = std::max(worst_estimate, e.error_estimate / L);
       EXPECT_LE(e.error_estimate, 1e-9 * L);
       EXPECT_NEAR(e.kappa, double(ref.segs[k].kappa(u)), 1e-12 * std::abs(e.kappa) + 1e-14);
       EXPECT_NEAR(std::remainder(e.theta - double(ref.segs[k].theta(u)), 2 * std::numbers::pi), 0.0, 1e-12);
@@ -48,6 +51,7 @@ TEST(GeometryEvaluate, MatchesTheLongDoubleModel) {
       }
     }
   }
+  std::printf("evaluate: worst |position − model|/length = %.2e, largest error estimate/length = %.2e\n", worst, worst_estimate);
   EXPECT_EQ(test::thrown_parameter([] { evaluate(test::log_spiral(), -1.0); }), "s");
 }
 
