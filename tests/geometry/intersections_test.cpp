@@ -102,41 +102,6 @@ TEST(GeometryIntersectLine, TangentLineGivesATouch) {
   }
 }
 
-// Crossings of two curves: segment intersections of the dense polylines, polished by Newton in
-// long double on p_a(u) − p_b(v) = 0.
-struct RefCrossing {
-  double s, t;
-};
-std::vector<RefCrossing> reference_curves(const test::RefCurve& A, const test::RefCurve& B) {
-  std::vector<RefCrossing> out;
-  const auto& SA = A.samples;
-  const auto& SB = B.samples;
-  for (size_t i = 0; i + 1 < SA.size(); ++i) {
-    if (SA[i].seg != SA[i + 1].seg) continue;
-    for (size_t j = 0; j + 1 < SB.size(); ++j) {
-      if (SB[j].seg != SB[j + 1].seg) continue;
-      const cld a0 = SA[i].p, a1 = SA[i + 1].p, b0 = SB[j].p, b1 = SB[j + 1].p;
-      const ld d = test::cross(a1 - a0, b1 - b0);
-      if (d == 0) continue;
-      const ld x = test::cross(b0 - a0, b1 - b0) / d, y = test::cross(b0 - a0, a1 - a0) / d;
-      if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) continue;
-      const size_t ka = SA[i].seg, kb = SB[j].seg;
-      ld u = SA[i].u + x * (SA[i + 1].u - SA[i].u), v = SB[j].u + y * (SB[j + 1].u - SB[j].u);
-      for (int it = 0; it < 20; ++it) {
-        const cld F = A.position(ka, u) - B.position(kb, v);
-        const cld ta = A.segs[ka].scale * A.tangent(ka, u), tb = -B.segs[kb].scale * B.tangent(kb, v);
-        const ld det = test::cross(ta, tb);
-        u += test::cross(-F, tb) / det;
-        v += test::cross(ta, -F) / det;
-      }
-      out.push_back({double(A.segs[ka].s_begin + A.segs[ka].scale * (u - A.segs[ka].ua)),
-                     double(B.segs[kb].s_begin + B.segs[kb].scale * (v - B.segs[kb].ua))});
-    }
-  }
-  std::sort(out.begin(), out.end(), [](auto x, auto y) { return x.s < y.s; });
-  return out;
-}
-
 TEST(GeometryIntersectCurves, CrossingsMatchTheDenseReference) {
   const PlanarCurve a = test::clothoid_spiral();
   const BoundingBox box = a.bounding_box();
@@ -154,7 +119,7 @@ TEST(GeometryIntersectCurves, CrossingsMatchTheDenseReference) {
     spans += r.spans, evaluations += r.evaluations;
     ASSERT_EQ(r.status, Status::ok) << r.message;
     const test::RefCurve rb(b, 1500, 0.01L);
-    const std::vector<RefCrossing> e = reference_curves(ra, rb);
+    const std::vector<test::RefCrossing> e = test::reference_curves(ra, rb);
     ASSERT_EQ(r.points.size(), e.size());
     total += long(e.size());
     for (size_t j = 0; j < e.size(); ++j) {

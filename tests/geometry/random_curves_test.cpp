@@ -12,6 +12,7 @@
 #include "lac/geometry/closest_point.hpp"
 #include "lac/geometry/intersections.hpp"
 #include "lac/geometry/offset.hpp"
+#include "lac/geometry/transforms.hpp"
 #include "reference_curve.hpp"
 
 namespace lac {
@@ -123,6 +124,30 @@ TEST(GeometryRandom, ClosestPointsLinesAndCuspsMatchTheModel) {
   }
   std::printf("random curves: %d curves, %d closest points (worst |Δd|/L = %.2e), %d line crossings (worst |Δs|/L = %.2e), "
               "%d cusps\n", curves, queries, worst_d, crossings, worst_s, cusps);
+}
+
+TEST(GeometryRandom, CurveCrossingsMatchTheModel) {
+  Rng r{7};
+  int crossings = 0;
+  double worst = 0;
+  for (int i = 0; i < 10; ++i) {
+    const PlanarCurve a = random_curve(r);
+    PlanarCurve b = random_curve(r);
+    const BoundingBox ba = a.bounding_box(), bb = b.bounding_box();  // b moved over a
+    b = translated(b, 0.5 * (ba.lo + ba.hi - bb.lo - bb.hi) + std::complex<double>(r.in(-0.3, 0.3), r.in(-0.3, 0.3)));
+    const Intersections x = intersect_curves(a, b);
+    ASSERT_EQ(x.status, Status::ok) << x.message;
+    const std::vector<test::RefCrossing> e = test::reference_curves(test::RefCurve(a, 600, 0.01L), test::RefCurve(b, 600, 0.01L));
+    ASSERT_EQ(x.points.size(), e.size()) << "pair " << i;
+    for (size_t k = 0; k < e.size(); ++k) {
+      EXPECT_NEAR(x.points[k].s, e[k].s, 1e-10 * a.length()) << "pair " << i;
+      EXPECT_NEAR(x.points[k].t, e[k].t, 1e-10 * a.length()) << "pair " << i;
+      worst = std::max({worst, std::abs(x.points[k].s - e[k].s) / a.length(), std::abs(x.points[k].t - e[k].t) / a.length()});
+    }
+    crossings += int(e.size());
+  }
+  EXPECT_GE(crossings, 5);
+  std::printf("random curve pairs: 10 pairs, %d crossings, worst |Δs|/L = %.2e\n", crossings, worst);
 }
 
 }  // namespace
