@@ -36,21 +36,32 @@ OffsetCusp first_offset_cusp(const PlanarCurve& curve, double d) {
   OffsetCusp c;
   if (d == 0) return c;
   const auto g = [d](double kappa) { return 1.0 - d * kappa; };
+  const double g0 = g(curve.segments().front().kappa_start());
+  if (g0 == 0) {
+    c.s = 0.0;
+    return c;
+  }
+  c.backwards_at_start = g0 < 0;
+  const double sign = g0 > 0 ? 1.0 : -1.0;  // the sign 1 − dκ starts with; a cusp where it is lost
+  const auto lost = [sign](double v) { return !(sign * v > 0); };
   for (size_t k = 0; k < curve.segments().size(); ++k) {
     const LaSegment& seg = curve.segments()[k];
     const double s0 = curve.segment_start(k);
-    if (g(seg.kappa_start()) <= 0) {
+    if (lost(g(seg.kappa_start()))) {
       c.s = s0;
-      c.at_joint = k > 0 && g(curve.segments()[k - 1].kappa_end()) > 0;
+      c.at_joint = k > 0;
       return c;
     }
-    if (g(seg.kappa_end()) > 0) continue;
-    // 1 − dκ changes sign inside: κ is monotonic in u, so one root; TOMS 748 on the closed form.
-    const auto f = [&](double u) { return g(seg.curvature_per_u(u) / seg.scale()); };
+    if (!lost(g(seg.kappa_end()))) continue;
+    // 1 − dκ loses its sign inside: κ is monotonic in u, so one root; TOMS 748 on the closed form.
+    const auto f = [&](double u) { return sign * g(seg.curvature_per_u(u) / seg.scale()); };
     std::uintmax_t iterations = 200;
-    const auto tol = [](double a, double b) { return std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b)); };
+    const double floor = std::numeric_limits<double>::epsilon() * (seg.ub() - seg.ua());
+    const auto tol = [floor](double a, double b) {
+      return std::abs(b - a) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(a), std::abs(b)) + floor;
+    };
     const auto bracket = boost::math::tools::toms748_solve(f, seg.ua(), seg.ub(), f(seg.ua()), f(seg.ub()), tol, iterations);
-    // The first u with 1 − dκ ≤ 0: the upper end of the final bracket.
+    // The first u where the sign is lost: the upper end of the final bracket, unless the lower one.
     const double u = f(bracket.first) <= 0 ? bracket.first : bracket.second;
     c.s = std::min(curve.segment_start(k + 1), s0 + seg.scale() * (u - seg.ua()));
     if (iterations >= 200) {

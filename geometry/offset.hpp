@@ -4,9 +4,9 @@
 // the offset is regular where 1 − dκ ≠ 0, runs backwards where 1 − dκ < 0 and has a cusp where
 // 1 − dκ changes sign; its curvature is κ/(1 − dκ) and its arc length ∫|1 − dκ| ds.
 // κ is monotonic on each LA segment (q is linear in s and K(q) is monotonic), so the first s
-// with 1 − dκ(s) ≤ 0 is found per segment from its ends and, inside one, by TOMS 748 on the
-// closed form κ(s): no sampling, nothing missed. At a joint where κ jumps across 1/d (a G1 joint)
-// the cusp is at the joint.
+// where 1 − dκ(s) vanishes or changes sign — the offset's first cusp — is found per segment from
+// its ends and, inside one, by TOMS 748 on the closed form κ(s): no sampling, nothing missed. At
+// a joint where κ jumps across 1/d (a G1 joint) the cusp is at the joint.
 //
 //   auto o = lac::offset_at(curve, s, 0.1);       // o.position, o.kappa, o.factor = 1 − dκ
 //   auto c = lac::first_offset_cusp(curve, 0.1);  // c.s (std::nullopt: regular all along)
@@ -36,10 +36,11 @@ struct OffsetPoint {
 OffsetPoint offset_at(const PlanarCurve& curve, double s, double d, const GaussLegendre& method = {});
 
 struct OffsetCusp {
-  /// The first s where 1 − dκ(s) ≤ 0 (the offset's first cusp, or s = 0 when it runs backwards
-  /// from the start), std::nullopt when 1 − dκ > 0 all along.
+  /// The first s where 1 − dκ(s) is 0 or changes sign (the offset's first cusp), std::nullopt
+  /// when it keeps its sign all along.
   std::optional<double> s;
-  bool at_joint = false;  ///< κ jumps across 1/d at a joint there
+  bool at_joint = false;            ///< κ jumps across 1/d at a joint there
+  bool backwards_at_start = false;  ///< 1 − dκ(0) < 0: the offset runs backwards from its start
   Status status = Status::ok;
   std::string message;
 };

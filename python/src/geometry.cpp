@@ -138,7 +138,7 @@ void bind_geometry(py::module_& m) {
         return py::float_(*r.s);
       },
       py::arg("curve"), py::arg("d"),
-      "The first arc length where 1 - d kappa(s) <= 0 (the offset at distance d has a cusp there), None if there is none");
+      "The first arc length where 1 - d kappa(s) is 0 or changes sign (the offset at distance d has a cusp there), None if there is none");
   m.def("translate", [](const Curve& c, py::handle v) { return curve(c, lac::translated(c.curve, point2(v, "translate", "offset"))); },
         py::arg("curve"), py::arg("offset"), "The curve moved by `offset` (exact: same laws)");
   m.def(

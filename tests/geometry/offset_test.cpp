@@ -9,6 +9,7 @@
 
 #include "curves.hpp"
 #include "lac/geometry/offset.hpp"
+#include "lac/geometry/transforms.hpp"
 #include "reference_curve.hpp"
 #include "tests/support/input_error.hpp"
 
@@ -45,10 +46,12 @@ TEST(GeometryOffset, PositionsAndCurvatureMatchTheModel) {
   }
 }
 
-// First s where 1 − dκ(s) ≤ 0 by bisection on the model's κ along each segment.
+// First s where 1 − dκ(s) vanishes or loses the sign it has at s = 0, by bisection on the
+// model's κ along each segment.
 double reference_cusp(const test::RefCurve& ref, double d) {
+  const ld sign = 1 - ld(d) * ref.segs[0].kappa(ref.segs[0].ua) > 0 ? 1 : -1;
   for (const test::RefSegment& g : ref.segs) {
-    const auto f = [&](ld u) { return 1 - ld(d) * g.kappa(u); };
+    const auto f = [&](ld u) { return sign * (1 - ld(d) * g.kappa(u)); };
     if (f(g.ua) <= 0) return double(g.s_begin);
     if (f(g.ub) > 0) continue;
     const ld u = test::bisect(f, g.ua, g.ub);
@@ -61,16 +64,24 @@ TEST(GeometryOffset, FirstCuspMatchesTheModel) {
   struct Case {
     PlanarCurve curve;
     double d;
-    bool cusp, at_joint;
+    bool cusp, at_joint, backwards;
   };
   const PlanarCurve spiral = test::clothoid_spiral(), comp = test::compound();
+  // compound() reversed: κ from −10/3 to −2/3, then −4/3 to 1/2; at d = −0.5, 1 − dκ starts at −2/3
+  // (the offset runs backwards) and turns positive where κ = −2.
+  const Result<PlanarCurve> rev = reversed(comp);
+  ASSERT_TRUE(rev.usable());
+  const PlanarCurve back = rev.curve;
   // κ from 2/3 to 5/6 (α = 2), then from 4/3 to 5/3 (α = −1) after a G1 joint at s = 3.
   const PlanarCurve jump = test::chain({{LaLaw{2.0}, 0.0, 1.0, 0.25, 0.16, 3.0}, {LaLaw{-1.0}, 0.0, 1.0, 4.0, 5.0, 3.0}}, 0.0, {0, 0}, 0.3);
   // spiral: κ from 0.2 to 6; compound: κ from −0.5 through 0 to 4/3, then 2/3 to 10/3 (G1 joint at s = 3).
-  const std::vector<Case> cases{{spiral, 1.0, true, false},    {spiral, 0.1, false, false}, {spiral, -1.0, false, false},
-                                {spiral, 0.05, false, false},  {spiral, 5.0, true, false},  {comp, -2.5, true, false},
-                                {comp, 0.9, true, false},      {comp, 1.2, true, false},     {comp, 0.25, false, false},
-                                {spiral, 10.0, true, false}, {jump, 1.0, true, true},     {jump, 1.25, true, false}};
+  const std::vector<Case> cases{{spiral, 1.0, true, false, false},  {spiral, 0.1, false, false, false},
+                                {spiral, -1.0, false, false, false}, {spiral, 0.05, false, false, false},
+                                {spiral, 5.0, true, false, false},   {comp, -2.5, true, false, true} ,
+                                {comp, 0.9, true, false, false},     {comp, 1.2, true, false, false},
+                                {comp, 0.25, false, false, false},   {spiral, 10.0, false, false, true},
+                                {jump, 1.0, true, true, false},      {jump, 1.25, true, false, false},
+                                {back, -0.5, true, false, true}};
   for (const Case& t : cases) {
     const test::RefCurve ref(t.curve, 10);
     const OffsetCusp r = first_offset_cusp(t.curve, t.d);
@@ -79,19 +90,24 @@ TEST(GeometryOffset, FirstCuspMatchesTheModel) {
     EXPECT_EQ(r.s.has_value(), t.cusp) << "d = " << t.d;
     EXPECT_EQ(std::isfinite(e), t.cusp) << "d = " << t.d;
     EXPECT_EQ(r.at_joint, t.at_joint) << "d = " << t.d;
+    EXPECT_EQ(r.backwards_at_start, t.backwards) << "d = " << t.d;
     if (r.s && std::isfinite(e)) {
       EXPECT_NEAR(*r.s, e, 1e-12 * t.curve.length()) << "d = " << t.d;
       // Beyond the cusp the offset runs backwards.
+      // The offset's direction flips there: 1 − dκ has the start's sign before, the other after.
+      const double sign = t.backwards ? -1.0 : 1.0;
       if (*r.s + 1e-6 < t.curve.length()) {
-        EXPECT_LT(offset_at(t.curve, *r.s + 1e-6, t.d).factor, 0.0);
+        EXPECT_LT(sign * offset_at(t.curve, *r.s + 1e-6, t.d).factor, 0.0);
       }
       if (*r.s > 1e-6 && !r.at_joint) {
-        EXPECT_GT(offset_at(t.curve, *r.s - 1e-6, t.d).factor, 0.0);
+        EXPECT_GT(sign * offset_at(t.curve, *r.s - 1e-6, t.d).factor, 0.0);
       }
     }
   }
-  // d = 10: 1 − dκ(0) = 1 − 10·0.2 < 0: the offset runs backwards from the start.
-  EXPECT_EQ(first_offset_cusp(spiral, 10.0).s.value_or(-1), 0.0);
+  // d = 10: 1 − dκ(0) = 1 − 10·0.2 < 0 and κ increases: the offset runs backwards from the start
+  // and never turns (no cusp).
+  EXPECT_TRUE(first_offset_cusp(spiral, 10.0).backwards_at_start);
+  EXPECT_FALSE(first_offset_cusp(spiral, 10.0).s.has_value());
   EXPECT_FALSE(first_offset_cusp(spiral, 0.0).s.has_value());
   EXPECT_EQ(test::thrown_parameter([&] { first_offset_cusp(spiral, NAN); }), "d");
   EXPECT_EQ(test::thrown_parameter([&] { offset_at(spiral, 1.0, INFINITY); }), "d");

@@ -108,8 +108,9 @@ TEST(GeometryRandom, ClosestPointsLinesAndCuspsMatchTheModel) {
       ASSERT_TRUE(oc.s.has_value());
       EXPECT_LE(*oc.s, s_star + 1e-12 * L);
       double first = NAN;  // bisection on the model's κ, segment by segment
+      const ld sign = 1 - ld(d) * ref.segs[0].kappa(ref.segs[0].ua) > 0 ? 1 : -1;
       for (const test::RefSegment& g : ref.segs) {
-        const auto f = [&](ld u) { return 1 - ld(d) * g.kappa(u); };
+        const auto f = [&](ld u) { return sign * (1 - ld(d) * g.kappa(u)); };
         if (f(g.ua) <= 0) {
           first = double(g.s_begin);
           break;
