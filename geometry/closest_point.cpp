@@ -120,10 +120,12 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
     }
     heap.pop();
     const detail::Span sp = store[i];
-    if (convex(sp, query) || 2 * sp.half() <= tol) {
+    const bool proven = convex(sp, query);
+    if (proven || 2 * sp.half() <= tol) {
       const Candidate c = polish(tr, sp, query);
       if (tr.failed()) return finish(tr.status(), "closest_point: " + tr.message());
-      leaf_lb = std::min(leaf_lb, c.d - c.err);
+      // Without the proof the span's minimum is within its length of the one found.
+      leaf_lb = std::min(leaf_lb, c.d - c.err - (proven ? 0.0 : 2 * sp.half()));
       offer(c, i, true);
       continue;
     }
