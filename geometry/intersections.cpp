@@ -26,7 +26,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kMaxTurn = 0.5;       // initial spans, and the most a transversal span may turn (rad)
 constexpr int kMinSpans = 16;
 constexpr double kLeafFraction = 1e-4;  // near-parallel pairs are halved down to this × length
-constexpr int kGroupSamples = 33;
+constexpr int kGroupSamples = 33;  // samples of a group of near-parallel leaf pairs: at least this, 16 per pair
+constexpr int kMaxGroupSamples = 4097;
 constexpr size_t kMaxLeaves = 20000;
 constexpr double kMaxInitialPairs = 1e8;  // overlap tests of the initial spans of both curves
 constexpr int kNewtonIterations = 40;
@@ -230,7 +231,8 @@ struct PairSolver {
 
   // A group of near-parallel leaf pairs: the signed distance of a from b through the foot point.
   void group(size_t seg_a, double u0, double u1, const Known& anchor_a, const Span& span_a, size_t seg_b, double v0,
-             double v1, const Known& anchor_b, const Span& span_b) {
+             double v1, const Known& anchor_b, const Span& span_b, size_t leaves) {
+    const int n = static_cast<int>(std::min<size_t>(kMaxGroupSamples, std::max<size_t>(kGroupSamples, 16 * leaves + 1)));
     struct Sample {
       bool valid = false;
       double sigma = 0;
@@ -251,14 +253,14 @@ struct PairSolver {
       s.valid = true;
       return s;
     };
-    std::vector<double> us(kGroupSamples);
-    std::vector<Sample> samples(kGroupSamples);
-    for (int i = 0; i < kGroupSamples; ++i) {
-      us[i] = u0 + (u1 - u0) * i / (kGroupSamples - 1);
+    std::vector<double> us(n);
+    std::vector<Sample> samples(n);
+    for (int i = 0; i < n; ++i) {
+      us[i] = u0 + (u1 - u0) * i / (n - 1);
       samples[i] = foot(us[i]);
     }
     bool crossed = false;
-    for (int i = 0; i + 1 < kGroupSamples; ++i) {
+    for (int i = 0; i + 1 < n; ++i) {
       const Sample &x = samples[i], &y = samples[i + 1];
       if (!x.valid || !y.valid) continue;
       if (x.sigma == 0) {
@@ -278,10 +280,10 @@ struct PairSolver {
     if (crossed) return;
     // No sign change: the smallest |σ|, refined by Brent, is a touch if within the tolerance.
     int best = -1;
-    for (int i = 0; i < kGroupSamples; ++i)
+    for (int i = 0; i < n; ++i)
       if (samples[i].valid && (best < 0 || std::abs(samples[i].sigma) < std::abs(samples[best].sigma))) best = i;
     if (best < 0) return;
-    const double lo = us[std::max(0, best - 1)], hi = us[std::min(kGroupSamples - 1, best + 1)];
+    const double lo = us[std::max(0, best - 1)], hi = us[std::min(n - 1, best + 1)];
     const auto m = [&](double u) {
       const Sample s = foot(u);
       return s.valid ? std::abs(s.sigma) : kInf;
@@ -374,6 +376,7 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
     used[g] = true;
     const Span &fa = A.spans[leaves[g].first], &fb = B.spans[leaves[g].second];
     double u0 = fa.u0, u1 = fa.u1, v0 = fb.u0, v1 = fb.u1;
+    size_t members = 1;
     for (bool grew = true; grew;) {
       grew = false;
       for (size_t m = g + 1; m < leaves.size(); ++m) {
@@ -383,9 +386,10 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
         if (pa.u0 > u1 || pa.u1 < u0 || pb.u0 > v1 || pb.u1 < v0) continue;
         u0 = std::min(u0, pa.u0), u1 = std::max(u1, pa.u1), v0 = std::min(v0, pb.u0), v1 = std::max(v1, pb.u1);
         used[m] = grew = true;
+        ++members;
       }
     }
-    solver.group(fa.seg, u0, u1, fa.anchor(), fa, fb.seg, v0, v1, fb.anchor(), fb);
+    solver.group(fa.seg, u0, u1, fa.anchor(), fa, fb.seg, v0, v1, fb.anchor(), fb, members);
     if (A.tracer.failed()) return failure(A.tracer.status(), "intersect_curves: a: " + A.tracer.message(), A.tracer);
     if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   }

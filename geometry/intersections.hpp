@@ -20,7 +20,7 @@
 // p_a(s) − p_b(t) = 0 from the crossing of the two tangent segments, kept in the pair's box, finds
 // it; where it does not converge the pair is halved further. Other pairs are halved (the longer span) down to
 // spans of 1e-4 of the length; the near-parallel pairs left are grouped, and on each group the
-// signed distance of a from b (through the foot point on b) is sampled at 33 points:
+// signed distance of a from b (through the foot point on b) is sampled (16 points per pair, 33 to 4097):
 // a sign change is a crossing (TOMS 748), a minimum of |distance| within the touch tolerance without
 // a sign change (Brent) is a tangential touch. A group of a curve running along the other (e.g. overlapping
 // pieces) is reported as not_converged after options.max_spans spans in all.
