@@ -140,6 +140,13 @@ Intersections intersect_line(const PlanarCurve& curve, cplx point, cplx directio
       if (tr.failed()) return failure(tr.status(), "intersect_line: " + tr.message(), tr);
       record(k, tr.trace(k, from, u), IntersectionKind::crossing);
     }
+    if (static_cast<long>(out.points.size()) > options.max_points) {
+      out.evaluations = tr.evaluations();
+      conclude(out, L, options, Status::max_iterations,
+               "intersect_line: more than max_points = " + std::to_string(options.max_points) +
+                   " intersections; those listed are the ones up to s = " + format_number(curve.segment_start(k + 1)));
+      return out;
+    }
   }
   out.evaluations = tr.evaluations();
   conclude(out, L, options);
@@ -332,6 +339,9 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
     for (size_t j = B.spans.size(); j-- > 0;)
       if (overlap(A.spans[i], B.spans[j])) stack.push_back({i, j});
   while (!stack.empty()) {
+    if (static_cast<long>(out.points.size()) > options.max_points)
+      return finish(Status::max_iterations, "intersect_curves: more than max_points = " + std::to_string(options.max_points) +
+                                                " intersections; those found so far are listed, not all");
     const auto [i, j] = stack.back();
     stack.pop_back();
     const Span sa = A.spans[i], sb = B.spans[j];

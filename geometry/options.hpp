@@ -15,6 +15,9 @@ struct GeometryOptions {
   /// Cap on the spans (pieces of arc length with a position at their centre) the search may
   /// create; past it the result has status max_iterations.
   long max_spans = 200'000;
+  /// Cap on the intersections an intersection query reports; past it the result has status
+  /// max_iterations (with the points found so far).
+  long max_points = 10'000;
   GaussLegendre method{};  ///< positions: ∫ e^{iθ} ds over each span from a known point
 
   /// InputError naming the option and its valid range (`who`: the calling function).
@@ -24,6 +27,8 @@ struct GeometryOptions {
     if (!(accept >= tolerance)) throw_input_error(who, "accept", accept, "[tolerance, 0.1]");
     if (max_spans < 16 || max_spans > 100'000'000)
       throw_input_error(who, "max_spans", static_cast<double>(max_spans), "[16, 1e8]");
+    if (max_points < 1 || max_points > 100'000'000)
+      throw_input_error(who, "max_points", static_cast<double>(max_points), "[1, 1e8]");
     method.validate();
   }
 };

@@ -15,11 +15,12 @@ namespace {
 
 py::tuple xy(std::complex<double> z) { return py::make_tuple(z.real(), z.imag()); }
 
-lac::GeometryOptions options(double tolerance, long max_spans, double accept) {
+lac::GeometryOptions options(double tolerance, long max_spans, double accept, long max_points = 10000) {
   lac::GeometryOptions o;
   o.tolerance = tolerance;
   o.max_spans = max_spans;
   o.accept = accept;
+  o.max_points = max_points;
   return o;
 }
 
@@ -81,25 +82,27 @@ void bind_geometry(py::module_& m) {
                    "point, distance, error_estimate, spans, evaluations.") + kOptions).c_str());
   m.def(
       "intersect_line",
-      [](const Curve& c, py::handle point, py::handle direction, double tolerance, long max_spans, double accept) {
+      [](const Curve& c, py::handle point, py::handle direction, double tolerance, long max_spans, double accept,
+         long max_points) {
         return intersections(lac::intersect_line(c.curve, point2(point, "intersect_line", "point"),
                                                  point2(direction, "intersect_line", "direction"),
-                                                 options(tolerance, max_spans, accept)));
+                                                 options(tolerance, max_spans, accept, max_points)));
       },
       py::arg("curve"), py::arg("point"), py::arg("direction"), py::kw_only(), py::arg("tolerance") = 1e-10,
-      py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept,
+      py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
       (std::string("Every intersection of the curve with the line through `point` along `direction`, ordered by s: dict "
                    "status, message, points (dicts s, t = coordinate along the unit direction, point, kind = crossing | "
-                   "tangent, error_estimate), error_estimate, spans, evaluations.") + kOptions).c_str());
+                   "tangent, error_estimate), error_estimate, spans, evaluations.") + kOptions +
+       " max_points: cap on the intersections (default 10000).").c_str());
   m.def(
       "intersect_curves",
-      [](const Curve& a, const Curve& b, double tolerance, long max_spans, double accept) {
-        return intersections(lac::intersect_curves(a.curve, b.curve, options(tolerance, max_spans, accept)));
+      [](const Curve& a, const Curve& b, double tolerance, long max_spans, double accept, long max_points) {
+        return intersections(lac::intersect_curves(a.curve, b.curve, options(tolerance, max_spans, accept, max_points)));
       },
       py::arg("a"), py::arg("b"), py::kw_only(), py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000,
-      py::arg("accept") = lac::kDefaultAccept,
+      py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
       (std::string("Every intersection of the curves a and b, ordered by s on a (t: arc length on b); as "
-                   "intersect_line.") + kOptions).c_str());
+                   "intersect_line.") + kOptions + " max_points: cap on the intersections (default 10000).").c_str());
   m.def(
       "offset",
       [](const Curve& c, py::array_t<double, py::array::c_style | py::array::forcecast> s, double d) {

@@ -208,6 +208,24 @@ TEST(GeometryIntersect, CapsAndBadInput) {
   const PlanarCurve tight = test::chain({{LaLaw{-1.0}, 0.0, 1.0, 2.0, 200.0, 10.0}}, 0.0, {0, 0}, 0.0);
   const Intersections few = intersect_line(tight, {0, 0}, {1, 0}, o);
   EXPECT_EQ(few.status, Status::max_iterations);
+  // More intersections than max_points: not usable, the first ones kept.
+  GeometryOptions few_points;
+  few_points.max_points = 3;
+  const std::complex<double> eye = position_at(tight, 0.999 * tight.length()).point.position;  // inside every turn
+  const Intersections all = intersect_line(tight, eye, {1, 0});
+  ASSERT_EQ(all.status, Status::ok);
+  ASSERT_GT(all.points.size(), 3u);
+  const Intersections many = intersect_line(tight, eye, {1, 0}, few_points);
+  EXPECT_EQ(many.status, Status::max_iterations) << many.message;
+  EXPECT_GT(many.points.size(), 3u);
+  const PlanarCurve spiral = test::clothoid_spiral();
+  const BoundingBox sb = spiral.bounding_box();
+  const Intersections pairs =
+      intersect_curves(spiral, rotated(spiral, 0.9, 0.5 * (sb.lo + sb.hi) + std::complex<double>(0.1, 0.05)), few_points);
+  EXPECT_EQ(pairs.status, Status::max_iterations) << pairs.message;
+  GeometryOptions bad;
+  bad.max_points = 0;
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, {0, 0}, {1, 0}, bad); }), "max_points");
   EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, {0, 0}, {0, 0}); }), "direction");
   EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, {NAN, 0}, {1, 0}); }), "point");
   EXPECT_EQ(test::thrown_parameter([&] { intersect_curves(c, PlanarCurve{}); }), "b");
