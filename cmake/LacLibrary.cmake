@@ -12,7 +12,7 @@
 # Link dependencies: Boost and Eigen appear in the public headers (PUBLIC); Ceres and libcerf only
 # in .cpp files (PRIVATE: a consumer of the shared library does not link them; a consumer of the
 # static library links them through $<LINK_ONLY:...>, and lacConfig.cmake finds them then).
-set(LAC_LIBRARY_FOLDERS common special integrators solvers curves constructions)
+set(LAC_LIBRARY_FOLDERS common special integrators solvers curves geometry constructions)
 
 set(LAC_SOURCES "")
 set(LAC_HEADERS "")

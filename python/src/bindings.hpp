@@ -100,6 +100,7 @@ void bind_curves(py::module_& m);
 void bind_constructions(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_special(py::module_& m);
+void bind_geometry(py::module_& m);  // geometry.cpp
 
 // ---- template definitions ----
 

@@ -252,4 +252,5 @@ PYBIND11_MODULE(_lac, m) {
   bind_constructions(m);
   bind_batch(m);
   bind_special(m);
+  bind_geometry(m);
 }

@@ -1,0 +1,114 @@
+"""The geometry bindings (lac.closest_point, intersect_line, intersect_curves, offset, offset_cusp,
+translate, rotate, scale, mirror, split, trim, append, reverse) against dense samples of the curve."""
+import math
+
+import numpy as np
+import pytest
+
+import lac
+
+
+@pytest.fixture(scope="module")
+def spiral():
+    """A G2 Hermite curve turning about 1.5 times (several local minima of the distance)."""
+    r = lac.g2_hermite(p0=(0, 0), theta0=0.0, kappa0=1.0, p1=(0.3, 0.2), theta1=9.0, kappa1=8.0, alpha=-1.0)
+    assert r.usable, r.message
+    return r.curve
+
+
+def dense(c, n=200001):
+    return c.eval(np.linspace(0, c.length, n))
+
+
+def test_closest_point_is_the_global_minimum(spiral):
+    pts = dense(spiral)
+    for q in [(0.1, 0.05), (-0.2, 0.3), (0.5, -0.4), (0.15, 0.1)]:
+        r = lac.closest_point(spiral, q)
+        assert r["status"] == "ok", r["message"]
+        d = np.hypot(pts.x - q[0], pts.y - q[1])
+        h = spiral.length / (len(pts.s) - 1)
+        assert d.min() - h <= r["distance"] <= d.min() + 1e-12
+        assert math.isclose(math.dist(r["point"], q), r["distance"], rel_tol=1e-12, abs_tol=1e-15)
+        x, y = spiral.eval([r["s"]]).x[0], spiral.eval([r["s"]]).y[0]
+        assert math.dist((x, y), r["point"]) < 1e-12
+
+
+def test_intersect_line_finds_every_sign_change(spiral):
+    pts = dense(spiral)
+    for angle in np.linspace(0.1, 3.0, 7):
+        p, d = (0.1, 0.1), (math.cos(angle), math.sin(angle))
+        r = lac.intersect_line(spiral, p, d)
+        assert r["status"] == "ok", r["message"]
+        h = d[0] * (pts.y - p[1]) - d[1] * (pts.x - p[0])
+        changes = np.nonzero(np.sign(h[:-1]) * np.sign(h[1:]) < 0)[0]
+        assert len(r["points"]) == len(changes)
+        for x, i in zip(r["points"], changes):
+            assert pts.s[i] - 1e-12 <= x["s"] <= pts.s[i + 1] + 1e-12 and x["kind"] == "crossing"
+
+
+def test_intersect_curves_with_a_mirror_image(spiral):
+    c = spiral.eval([0.7 * spiral.length])
+    p, t = (c.x[0], c.y[0]), (math.cos(c.theta[0]), math.sin(c.theta[0]))
+    r = lac.intersect_curves(spiral, lac.mirror(spiral, p, t))
+    assert r["status"] == "ok", r["message"]
+    kinds = [x["kind"] for x in r["points"]]
+    assert kinds.count("tangent") == 1
+    touch = next(x for x in r["points"] if x["kind"] == "tangent")
+    assert abs(touch["s"] - 0.7 * spiral.length) < 1e-5
+    on_line = [x["s"] for x in r["points"] if x["kind"] == "crossing" and abs(x["s"] - x["t"]) < 1e-9]
+    line = [x["s"] for x in lac.intersect_line(spiral, p, t)["points"] if x["kind"] == "crossing"]
+    assert np.allclose(on_line, line, atol=1e-10)
+
+
+def test_offset_and_cusp(spiral):
+    s = np.linspace(0, spiral.length, 101)
+    pts = spiral.eval(s)
+    d = 0.05
+    o = lac.offset(spiral, s, d)
+    assert np.all(o.status == "ok")
+    assert np.allclose(o.x, pts.x - d * np.sin(pts.theta), atol=1e-12)
+    assert np.allclose(o.y, pts.y + d * np.cos(pts.theta), atol=1e-12)
+    assert np.allclose(o.factor, 1 - d * pts.kappa)
+    cusp = lac.offset_cusp(spiral, 0.2)  # kappa passes 1/0.2 = 5 on the way from 1 to 8
+    assert cusp is not None and 0 < cusp < spiral.length
+    assert math.isclose(spiral.kappa(cusp), 5.0, rel_tol=1e-9)
+    assert lac.offset_cusp(spiral, -0.1) is None
+
+
+def test_transforms(spiral):
+    L = spiral.length
+    m = lac.mirror(spiral, (0, 0), (1, 0))
+    assert math.isclose(m.length, L) and math.isclose(m.kappa(0.3 * L), -spiral.kappa(0.3 * L), rel_tol=1e-12)
+    assert [seg["alpha"] for seg in m.segments] == [seg["alpha"] for seg in spiral.segments]
+    sc = lac.scale(spiral, 2.0, (1, 1))
+    assert math.isclose(sc.length, 2 * L) and math.isclose(sc.kappa(0.6 * L), spiral.kappa(0.3 * L) / 2, rel_tol=1e-12)
+    r = lac.rotate(lac.translate(spiral, (1, 2)), 0.5, (1, 2))
+    a, b = spiral.eval([0.4 * L]), r.eval([0.4 * L])
+    z = complex(a.x[0], a.y[0]) * complex(math.cos(0.5), math.sin(0.5)) + complex(1, 2)
+    assert abs(z - complex(b.x[0], b.y[0])) < 1e-12
+    parts = lac.split(spiral, 0.4 * L)
+    assert parts.usable and math.isclose(parts.curve[0].length + parts.curve[1].length, L)
+    back = lac.append(parts.curve[0], parts.curve[1], 1e-9)
+    assert back.usable and math.isclose(back.curve.length, L)
+    t = lac.trim(spiral, 0.2 * L, 0.5 * L)
+    assert t.usable and math.isclose(t.curve.length, 0.3 * L)
+    rv = lac.reverse(spiral)
+    assert rv.usable and math.isclose(rv.curve.kappa(0.1 * L), -spiral.kappa(0.9 * L), rel_tol=1e-9)
+
+
+def test_bad_input(spiral):
+    with pytest.raises(lac.InputError) as e:
+        lac.scale(spiral, -1.0)
+    assert e.value.parameter == "factor"
+    with pytest.raises(lac.InputError) as e:
+        lac.append(spiral, lac.translate(spiral, (5, 0)), 1e-9)
+    assert e.value.parameter == "b"
+    with pytest.raises(lac.InputError) as e:
+        lac.closest_point(spiral, (0, 0), tolerance=0.0)
+    assert e.value.parameter == "tolerance"
+    with pytest.raises(lac.InputError) as e:
+        lac.intersect_line(spiral, (0, 0), (0, 0))
+    assert e.value.parameter == "direction"
+    with pytest.raises(lac.InputError) as e:
+        lac.split(spiral, spiral.length)
+    assert e.value.parameter == "s"
