@@ -1,0 +1,72 @@
+#pragma once
+// A planar LA curve (a PlanarCurve: LA segments joined G1 or G2) as a cubic B-spline with a
+// certified bound on the distance between the two, for CAD export (docs/export.md).
+//
+// Each LA segment is cut into spans [s0, s1] (the joints and an inflection are span ends); on a
+// span the B-spline is the cubic Hermite interpolant in arc length of the curve c(s): the end
+// positions, and the unit tangents e^{iθ} times the span length h, i.e. the Bézier points
+//   P0,  P0 + (h/3) e^{iθ0},  P1 − (h/3) e^{iθ1},  P1.
+// Consecutive spans share the end point and the tangent vector, so the B-spline, with the arc
+// length as parameter and every interior knot double, is C1 (G1): 2N + 2 control points for N
+// spans (the Bézier junctions are implied by C1); its curvature equals the LA
+// curve's only to O(h²) at a knot (reported as max_curvature_jump).
+//
+// The bound is proven for the interpolation (Peano kernels of the Hermite cubic, with rigorous
+// bounds of |κ|, |κ'|, |κ''| on the span: on a span without an inflection each is a monotone
+// function of s, so its largest value is at an end): per span the least of
+//   h⁴/384 · (|κ''| + 3|κ||κ'| + |κ|³)   (|c⁗| ≤ that, c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ})
+//   h³/96  · (|κ'| + κ²)                  (|c'''|; used where κ'' is unbounded, α ∈ (−1, −1/2) at an inflection)
+//   h²/16  · |κ|                           (|c''|; used where κ' is unbounded, α < −1 at an inflection)
+// plus the end positions' quadrature error estimates, the joint gaps of the chain (position and
+// tangent), and rounding. The B-spline is within max_deviation of the curve at the same arc
+// length, hence in Hausdorff distance.
+//
+//   auto r = lac::to_bspline(curve, {.tolerance = 1e-6});
+//   if (r.usable()) write_dxf("curve.dxf", r.curve);   // r.info.max_deviation ≤ 1e-6
+#include <string>
+
+#include "lac/common/summary.hpp"
+#include "lac/curves/planar/planar_curve.hpp"
+#include "lac/export/bspline.hpp"
+
+namespace lac {
+
+/// The default export tolerance relative to the curve's length: T = kDefaultExportTolerance × length.
+inline constexpr double kDefaultExportTolerance = 1e-6;
+
+struct ExportOptions {
+  /// Bound on the deviation, absolute in the curve's units (> 0); 0: kDefaultExportTolerance × length.
+  double tolerance = 0;
+  /// Cap on the number of spans (≥ 1): status max_iterations beyond it.
+  long max_spans = 1'000'000;
+};
+
+struct ExportInfo {
+  double tolerance = 0;        ///< the tolerance used (absolute)
+  double max_deviation = 0;    ///< certified bound on |c(s) − b(s)| (absolute), see above
+  double interpolation = 0;    ///< the largest interpolation bound of a span (proven part)
+  double positions = 0;        ///< the largest end-position term (quadrature estimates, joint gaps)
+  long spans = 0;
+  /// Whether the B-spline's curvature is monotone on every LA segment in the LA curvature's direction
+  /// (a constant curvature: either direction), checked at 33 points per span and across its knots.
+  bool curvature_monotone = false;
+  long monotone_segments = 0;     ///< LA segments on which it is
+  double max_curvature_jump = 0;  ///< largest jump of the B-spline's curvature at a knot
+  std::string continuity = "G1";  ///< at every knot (C1 in the arc-length parameter)
+};
+
+using ExportResult = Result<BSpline, ExportInfo>;
+
+/// The certified cubic B-spline of a usable curve (InputError "tolerance" unless ≥ 0 and finite,
+/// "max_spans" unless ≥ 1, "curve" for an empty curve). Status ok when max_deviation ≤
+/// tolerance, inaccurate beyond it (no curve then; info keeps the bound), max_iterations past
+/// max_spans, numerical_failure if a position failed. summary.error = max_deviation / length and
+/// summary.accept = tolerance / length.
+ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options = {});
+
+/// The curvature check of ExportInfo on a B-spline made by to_bspline, on its Bézier pieces
+/// (export/write.hpp bezier_pieces): segment k's spans are those between its joints' knots.
+bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments = nullptr,
+                        double* max_jump = nullptr);
+
+}  // namespace lac
