@@ -148,8 +148,11 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
   const double tol = options.tolerance > 0 ? options.tolerance : kDefaultExportTolerance * length;
   r.info.tolerance = tol;
   r.summary.accept = tol / length;
-  // 9/10 of the tolerance for the interpolation, the rest for positions and rounding.
-  const double target = 0.9 * tol;
+  // 9/10 of the tolerance for the interpolation, the rest for positions and rounding; no finer
+  // than the rounding of the coordinates (a tolerance below it ends inaccurate without a flood of spans).
+  double extent = length;
+  for (const LaSegment& seg : curve.segments()) extent = std::max(extent, std::abs(seg.start()) + length);
+  const double target = std::max(0.9 * tol, 64 * DBL_EPSILON * extent);
 
   BSpline& b = r.curve;
   b.degree = 3;

@@ -5,8 +5,22 @@
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <IGESData_IGESWriter.hxx>
+#include <IGESData_Protocol.hxx>
+#include <IGESSelect_WorkLibrary.hxx>
+#include <Interface_FloatWriter.hxx>
+#include <fstream>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <STEPControl_Writer.hxx>
+#include <StepData_Protocol.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
+#include <XSControl_Controller.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -18,6 +32,16 @@
 namespace lac {
 
 namespace {
+
+/// OpenCASCADE's translators print statistics to stdout through the default messenger: silenced,
+/// since the caller's stdout may be a report (the `lac` tool prints JSON there).
+void quiet() {
+  static const bool done = [] {
+    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    return true;
+  }();
+  (void)done;
+}
 
 Handle(Geom_BSplineCurve) make_curve(const BSpline& b) {
   b.validate();
@@ -42,13 +66,23 @@ Handle(Geom_BSplineCurve) make_curve(const BSpline& b) {
 }  // namespace
 
 void write_step(const std::string& path, const BSpline& b) {
+  quiet();
   try {
     const Handle(Geom_BSplineCurve) c = make_curve(b);
     const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(c);
     STEPControl_Writer writer;
     if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone)
       throw_input_error("export", "export", "'" + path + "': OpenCASCADE could not translate the curve to STEP");
-    if (writer.Write(path.c_str()) != IFSelect_RetDone)
+    // STEPControl_Writer::Write prints reals with 12 to 13 significant digits; the same model
+    // through StepData_StepWriter with 17 ("%.16E", round-trip exact).
+    const Handle(StepData_Protocol) protocol =
+        Handle(StepData_Protocol)::DownCast(writer.WS()->NormAdaptor()->Protocol());
+    StepData_StepWriter out(writer.Model());
+    out.FloatWriter().SetFormat("%.16E");
+    out.FloatWriter().SetZeroSuppress(Standard_False);
+    out.SendModel(protocol);
+    std::ofstream file(path, std::ios::binary);
+    if (protocol.IsNull() || !file || !out.Print(file) || !file.flush())
       throw_input_error("export", "export", "'" + path + "': cannot write the STEP file");
   } catch (const Standard_Failure& e) {
     throw_input_error("export", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
@@ -56,6 +90,7 @@ void write_step(const std::string& path, const BSpline& b) {
 }
 
 void write_iges(const std::string& path, const BSpline& b) {
+  quiet();
   try {
     IGESControl_Controller::Init();
     const Handle(Geom_BSplineCurve) c = make_curve(b);
@@ -63,7 +98,16 @@ void write_iges(const std::string& path, const BSpline& b) {
     if (!writer.AddGeom(c))
       throw_input_error("export", "export", "'" + path + "': OpenCASCADE could not translate the curve to IGES");
     writer.ComputeModel();
-    if (!writer.Write(path.c_str()))
+    // IGESControl_Writer::Write prints reals with 10 significant digits (1e-10 relative, above a
+    // tight tolerance); the same model through IGESData_IGESWriter with 17 ("%.16E", round-trip).
+    const Handle(IGESData_Protocol) protocol =
+        Handle(IGESData_Protocol)::DownCast(IGESSelect_WorkLibrary::DefineProtocol());
+    IGESData_IGESWriter out(writer.Model());
+    out.FloatWriter().SetFormat("%.16E");
+    out.FloatWriter().SetZeroSuppress(Standard_False);
+    out.SendModel(protocol);
+    std::ofstream file(path, std::ios::binary);
+    if (!file || !out.Print(file) || !file.flush())
       throw_input_error("export", "export", "'" + path + "': cannot write the IGES file");
   } catch (const Standard_Failure& e) {
     throw_input_error("export", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
