@@ -33,6 +33,10 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
 #endif
   if (common.export_tol && !(*common.export_tol > 0 && std::isfinite(*common.export_tol)))
     throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
+  if (common.export_degree && *common.export_degree != 3 && *common.export_degree != 5)
+    throw_input_error("lac", "export-degree", *common.export_degree, "3 or 5");
+  if (format == ExportFormat::svg && common.export_degree.value_or(3) != 3)
+    throw_input_error("lac", "export-degree", *common.export_degree, "3 for .svg (SVG paths hold cubic Bezier curves)");
   if (curve == nullptr) {
     report["export"] = nullptr;
     return;
@@ -40,6 +44,7 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
   const std::string path = row_path(common.export_path, current_batch_row());
   ExportOptions o;
   if (common.export_tol) o.tolerance = *common.export_tol;
+  o.degree = common.export_degree.value_or(format == ExportFormat::svg ? 3 : 5);
   const ExportResult r = to_bspline(*curve, o);
   record_status(r.summary.status);
   if (r.usable()) {

@@ -8,7 +8,8 @@ namespace lac::cli {
 
 /// Without --export: nothing. Else writes the file (curve usable) and sets report["export"] =
 /// {file, format, degree, control_points, max_deviation (the certified bound), curvature_monotone,
-/// tolerance, spans, continuity, max_curvature_jump, status, message}; the export's status is
+/// tolerance, spans, continuity (G2 or G1), max_curvature_jump, status, message}; degree 5 unless
+/// --export-degree 3 or .svg; the export's status is
 /// recorded (inaccurate when the bound exceeds --export-tol: exit 3). A curve that is not usable
 /// gives "export": null and writes nothing. InputError "export" for an unknown extension, a file
 /// that cannot be written, or STEP/IGES in a build without OpenCASCADE.

@@ -34,6 +34,9 @@ void add_export_options(CLI::App& sub, CommonArgs& a) {
   sub.add_option("--export-tol", a.export_tol,
                  "Bound on the exported curve's distance from the LA curve, absolute (default 1e-6 x curve length); "
                  "a larger certified bound makes the result inaccurate (exit 3)");
+  sub.add_option("--export-degree", a.export_degree,
+                 "5: quintic spans, curvature continuous (G2; default) | 3: cubic spans (G1; the default and only "
+                 "choice for .svg, whose paths hold cubic Beziers)");
 }
 
 int sample_count(const CommonArgs& a) {

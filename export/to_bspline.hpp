@@ -39,6 +39,9 @@ struct ExportOptions {
   double tolerance = 0;
   /// Cap on the number of spans (≥ 1): status max_iterations beyond it.
   long max_spans = 1'000'000;
+  /// 5: quintic Hermite spans (c, c', c'' at the ends), C2 in arc length inside each LA segment and
+  /// at G2 joints, so the curvature is continuous (G2); 3: cubic Hermite spans, C1 (G1).
+  int degree = 5;
 };
 
 struct ExportInfo {

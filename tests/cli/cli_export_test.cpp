@@ -42,6 +42,9 @@ TEST(CliExport, AcceptanceG2EveryFormat) {
     EXPECT_LE(e["max_deviation"].get<double>(), 1e-6);
     EXPECT_GT(e["control_points"].get<int>(), 4);
     EXPECT_TRUE(e["curvature_monotone"].is_boolean());
+    EXPECT_EQ(e["degree"], ext == "svg" ? 3 : 5);
+    EXPECT_EQ(e["continuity"], ext == "svg" ? "G1" : "G2");
+    if (ext != "svg") EXPECT_EQ(e["curvature_monotone"], true);
     EXPECT_GT(fs::file_size(f), 100u) << f;
   }
 }
@@ -78,6 +81,10 @@ TEST(CliExport, InvalidInput) {
   EXPECT_EQ(test::run_lac(kG2 + " --export " + (temp_dir() / "c.stl").string()).status, 2);
   EXPECT_EQ(test::run_lac(kG2 + " --export " + (temp_dir() / "c.dxf").string() + " --export-tol -1").status, 2);
   EXPECT_EQ(test::run_lac(kG2 + " --export /nonexistent-dir/c.dxf").status, 2);
+  EXPECT_EQ(test::run_lac(kG2 + " --export " + (temp_dir() / "c.svg").string() + " --export-degree 5").status, 2);
+  EXPECT_EQ(test::run_lac(kG2 + " --export " + (temp_dir() / "c.dxf").string() + " --export-degree 4").status, 2);
+  const auto j = test::run_lac_json(kG2 + " --export " + (temp_dir() / "c.dxf").string() + " --export-degree 3");
+  EXPECT_EQ(j["export"]["degree"], 3);
 }
 
 TEST(CliExport, BatchWritesOneFilePerRow) {

@@ -35,15 +35,21 @@ struct Exported {
   ExportResult result;
 };
 
-const Exported& acceptance() {  // lac g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 --p1 4,0 --theta1 -0.6 --kappa1 -0.3 --alpha -0.5
-  static const Exported e = [] {
+/// Quintic (G2) for STEP, IGES and DXF; cubic for SVG (its paths hold cubic Béziers).
+const Exported& acceptance(int degree);
+const Exported& acceptance() { return acceptance(5); }
+
+// lac g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 --p1 4,0 --theta1 -0.6 --kappa1 -0.3 --alpha -0.5
+const Exported& acceptance(int degree) {
+  static const auto make = [](int d) {
     Exported x;
     const G2Result g = solve_g2({{{0, 0}, 0.6, 0.5}, {{4, 0}, -0.6, -0.3}, -0.5});
     x.curve = g.curve;
-    x.result = to_bspline(x.curve, {.tolerance = 1e-6});
+    x.result = to_bspline(x.curve, {.tolerance = 1e-6, .degree = d});
     return x;
-  }();
-  return e;
+  };
+  static const Exported cubic = make(3), quintic = make(5);
+  return degree == 3 ? cubic : quintic;
 }
 
 std::string temp_file(const std::string& name) {
@@ -131,7 +137,7 @@ TEST(ExportReadBack, DxfByEzdxf) {
   int degree = 0;
   size_t control_points = 0;
   in >> degree >> control_points;
-  EXPECT_EQ(degree, 3);
+  EXPECT_EQ(degree, 5);
   EXPECT_EQ(control_points, e.result.curve.control_points.size());
   double t, x, y, worst = 0;
   int points = 0;
@@ -171,7 +177,7 @@ std::vector<std::array<std::complex<double>, 4>> parse_svg_path(const std::strin
 }
 
 TEST(ExportReadBack, SvgCubicPath) {
-  const Exported& e = acceptance();
+  const Exported& e = acceptance(3);
   ASSERT_TRUE(e.result.usable());
   std::ostringstream out;
   write_svg(out, e.result.curve);

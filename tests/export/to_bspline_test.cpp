@@ -51,17 +51,20 @@ PlanarCurve acceptance_curve() {  // lac g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 -
   return r.curve;
 }
 
-TEST(ToBspline, StructureOfTheG2AcceptanceCurve) {
+void check_structure(int degree) {
   const PlanarCurve c = acceptance_curve();
-  const ExportResult r = to_bspline(c, {.tolerance = 1e-6});
+  const ExportResult r = to_bspline(c, {.tolerance = 1e-6, .degree = degree});
   ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
   const BSpline& b = r.curve;
   b.validate();
-  EXPECT_EQ(b.degree, 3);
-  EXPECT_EQ(b.control_points.size(), static_cast<size_t>(2 * r.info.spans + 2));
+  EXPECT_EQ(b.degree, degree);
+  // Cubic: C1 everywhere (double knots), 2N + 2 points. Quintic on a G2 curve: C2 everywhere
+  // (triple knots), 3N + 3 points.
+  EXPECT_EQ(b.control_points.size(), static_cast<size_t>(degree == 3 ? 2 * r.info.spans + 2 : 3 * r.info.spans + 3));
+  EXPECT_EQ(r.info.continuity, degree == 3 ? "G1" : "G2");
   EXPECT_LE(r.info.max_deviation, 1e-6);
   EXPECT_GT(r.info.max_deviation, 0);
-  // The joints of the LA chain are knots (double: C1 in arc length).
+  // The joints of the LA chain are knots, of multiplicity degree − 1 (cubic) or degree − 2 (quintic).
   std::vector<double> k;
   std::vector<int> m;
   b.distinct_knots(k, m);
@@ -69,17 +72,27 @@ TEST(ToBspline, StructureOfTheG2AcceptanceCurve) {
     const double s = c.segment_start(j);
     const auto it = std::find(k.begin(), k.end(), s);
     ASSERT_NE(it, k.end()) << "joint " << j;
-    EXPECT_EQ(m[it - k.begin()], 2);
+    EXPECT_EQ(m[it - k.begin()], degree == 3 ? 2 : 3);
   }
   EXPECT_EQ(b.point_at(0), c.segments().front().start());
-  // The cubic's curvature is only O(h²)-close to κ at the knots: on this curve one of the three
-  // segments has a knot where it jumps against the LA curvature's direction.
-  EXPECT_GE(r.info.monotone_segments, 2) << r.info.monotone_segments << " of " << c.segments().size()
-                                         << " segments; jump " << r.info.max_curvature_jump;
+  if (degree == 5) {
+    EXPECT_TRUE(r.info.curvature_monotone);
+    EXPECT_LE(r.info.max_curvature_jump, 1e-9);  // curvature continuous at every knot
+  } else {
+    // The cubic's curvature is only O(h²)-close to κ at the knots: on this curve one of the three
+    // segments has a knot where it jumps against the LA curvature's direction.
+    EXPECT_GE(r.info.monotone_segments, 2);
+    EXPECT_GT(r.info.max_curvature_jump, 1e-4);
+  }
   const double measured = measured_deviation(c, b, 24);
   EXPECT_LE(measured, r.info.max_deviation);
   EXPECT_GT(measured, 0.01 * r.info.max_deviation) << "the bound is far from the measured deviation";
+  std::printf("degree %d: %zu control points, %ld spans, bound %.3g, measured %.3g, monotone %d\n", degree,
+              b.control_points.size(), r.info.spans, r.info.max_deviation, measured, r.info.curvature_monotone);
 }
+
+TEST(ToBspline, StructureOfTheG2AcceptanceCurveCubic) { check_structure(3); }
+TEST(ToBspline, StructureOfTheG2AcceptanceCurveQuintic) { check_structure(5); }
 
 TEST(ToBspline, DefaultToleranceIsRelativeToLength) {
   const PlanarCurve c = acceptance_curve();
@@ -89,6 +102,7 @@ TEST(ToBspline, DefaultToleranceIsRelativeToLength) {
   EXPECT_THROW(to_bspline(c, {.tolerance = -1}), InputError);
   EXPECT_THROW(to_bspline(c, {.tolerance = NAN}), InputError);
   EXPECT_THROW(to_bspline(PlanarCurve{}, {}), InputError);
+  EXPECT_THROW(to_bspline(c, {.degree = 4}), InputError);
 }
 
 TEST(ToBspline, SpanCapGivesMaxIterations) {
@@ -120,7 +134,7 @@ TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
       continue;  // a random law out of the segment's domain
     }
     const double tol = (i % 3 == 0 ? 1e-3 : i % 3 == 1 ? 1e-6 : 1e-9) * c.length();
-    const ExportResult r = to_bspline(c, {.tolerance = tol});
+    const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = i % 2 == 0 ? 5 : 3});
     if (!r.usable() && r.summary.status == Status::inaccurate && r.info.positions > 0.1 * tol) {
       // The curve's own positions are not known to the tolerance (e.g. α near 0 in the plain form,
       // a near-step curvature): the export says inaccurate, as it must.
