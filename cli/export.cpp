@@ -63,6 +63,8 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
                       {"tolerance", number(r.info.tolerance)},
                       {"spans", r.info.spans},
                       {"continuity", r.info.continuity},
+                      {"monotone_segments", r.info.monotone_segments},
+                      {"constant_curvature_segments", r.info.constant_curvature_segments},
                       {"max_curvature_jump", number(r.info.max_curvature_jump)},
                       {"status", std::string(to_string(r.summary.status))},
                       {"message", r.summary.message.empty() ? Json(nullptr) : Json(r.summary.message)}};

@@ -84,6 +84,7 @@ struct SpanBound {
   double value = HUGE_VAL;  // the interpolation bound
   int order = 2;            // the derivative it uses (its rate in h)
   int degree = 3;           // the Hermite interpolant: 3 (c, c') or 5 (c, c', c'')
+  std::array<double, 7> by_order{};  // the bound of each order of that degree (0: unused)
 };
 
 /// The interpolation bound on the part [u0, u1] of `seg` (no inflection inside) of the Hermite
@@ -101,10 +102,12 @@ SpanBound span_bound(const LaSegment& seg, double u0, double u1, int degree) {
   SpanBound best;
   for (int d : {degree, 3}) {
     const auto& C = d == 3 ? kCubic : kQuintic;
+    best = {HUGE_VAL, 2, d, {}};
     for (int order = 2; order <= d + 1; ++order) {
       if (C[order] == 0) continue;
       const double v = C[order] * std::pow(h, order) * majorants(order, k);
-      if (v < best.value) best = {v, order, d};
+      best.by_order[order] = v;
+      if (v < best.value) best.value = v, best.order = order;
     }
     if (best.value < HUGE_VAL) break;
   }
@@ -122,10 +125,13 @@ bool split(const LaSegment& seg, double u0, double u1, int degree, double target
     bounds.push_back(b);
     return true;
   }
-  // Into n equal parts with n from the rate h^order (at least 2, at most 64 per level).
-  const double ratio = b.value / target;
-  const double n_real = std::isfinite(ratio) ? std::ceil(std::pow(ratio, 1.0 / b.order) * 1.01) : 2.0;
-  const int n = static_cast<int>(std::clamp(n_real, 2.0, 64.0));
+  // Into n equal parts, n the least over the orders m of (bound_m / target)^(1/m) (bound_m ∝ h^m,
+  // the derivative bounds do not grow on a part), at least 2 and at most 64 per level.
+  double n_real = HUGE_VAL;
+  for (int m = 2; m < 7; ++m)
+    if (b.by_order[m] > 0 && std::isfinite(b.by_order[m]))
+      n_real = std::min(n_real, std::ceil(std::pow(b.by_order[m] / target, 1.0 / m) * 1.01));
+  const int n = static_cast<int>(std::clamp(std::isfinite(n_real) ? n_real : 2.0, 2.0, 64.0));
   double a = u0;
   for (int i = 1; i <= n; ++i) {
     const double c = i == n ? u1 : u0 + (u1 - u0) * i / n;
@@ -169,18 +175,24 @@ double bezier_curvature(const Piece& p, double t) {
 
 }  // namespace
 
-bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump) {
+bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump,
+                        long* constant_segments) {
   const auto pieces = bezier_pieces(b);
   std::vector<double> knots;
   std::vector<int> mult;
   b.distinct_knots(knots, mult);  // piece j spans [knots[j], knots[j + 1]]
   double jump = 0;
-  long good = 0;
+  long good = 0, constant = 0;
   size_t j = 0;
   double previous_end_kappa = NAN;
   for (size_t k = 0; k < curve.segments().size(); ++k) {
     const LaSegment& seg = curve.segments()[k];
-    const double dir = seg.kappa_end() > seg.kappa_start() ? 1.0 : seg.kappa_end() < seg.kappa_start() ? -1.0 : 0.0;
+    // A curvature constant to 1e-9 (an arc, up to the construction's rounding): no direction to
+    // keep; a polynomial's curvature cannot be constant, so such a segment is not checked.
+    const double kscale = std::max(std::abs(seg.kappa_start()), std::abs(seg.kappa_end())) + 1.0 / curve.length();
+    const double dk = seg.kappa_end() - seg.kappa_start();
+    const double dir = dk > 1e-9 * kscale ? 1.0 : dk < -1e-9 * kscale ? -1.0 : 0.0;
+    if (dir == 0) ++constant;
     const double end = curve.segment_start(k + 1);
     // The LA curve's own curvature jump at the joint before this segment (0 for G2).
     const double la_jump = k == 0 ? 0.0 : seg.kappa_start() - curve.segments()[k - 1].kappa_end();
@@ -201,11 +213,12 @@ bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monoto
       if (values[i] < values[i - 1] - slack) up = false;
       if (values[i] > values[i - 1] + slack) down = false;
     }
-    if (!values.empty() && ((dir > 0 && up) || (dir < 0 && down) || (dir == 0 && (up || down)))) ++good;
+    if (!values.empty() && ((dir > 0 && up) || (dir < 0 && down))) ++good;
   }
   if (monotone_segments) *monotone_segments = good;
+  if (constant_segments) *constant_segments = constant;
   if (max_jump) *max_jump = jump;
-  return good == static_cast<long>(curve.segments().size());
+  return good + constant == static_cast<long>(curve.segments().size());
 }
 
 ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) {
@@ -373,7 +386,8 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
   r.info.interpolation = interpolation;
   r.info.positions = positions;
   r.info.max_deviation = deviation;
-  r.info.curvature_monotone = curvature_monotone(b, curve, &r.info.monotone_segments, &r.info.max_curvature_jump);
+  r.info.curvature_monotone = curvature_monotone(b, curve, &r.info.monotone_segments, &r.info.max_curvature_jump,
+                                                 &r.info.constant_curvature_segments);
   r.summary.error = deviation / length;
   r.summary.error_estimate = deviation;
   r.summary.iterations = static_cast<int>(std::min<long>(static_cast<long>(n), std::numeric_limits<int>::max()));

@@ -50,10 +50,13 @@ struct ExportInfo {
   double interpolation = 0;    ///< the largest interpolation bound of a span (proven part)
   double positions = 0;        ///< the largest end-position term (quadrature estimates, joint gaps)
   long spans = 0;
-  /// Whether the B-spline's curvature is monotone on every LA segment in the LA curvature's direction
-  /// (a constant curvature: either direction), checked at 33 points per span and across its knots.
+  /// Whether the B-spline's curvature is monotone, in the LA curvature's direction, on every LA
+  /// segment whose curvature changes (by more than 1e-9 of its scale); checked at 33 points per
+  /// span and across the knots inside the segment (1e-9 relative slack for rounding). A segment
+  /// of constant curvature (an arc) is not checked: no polynomial has constant curvature.
   bool curvature_monotone = false;
-  long monotone_segments = 0;     ///< LA segments on which it is
+  long monotone_segments = 0;            ///< LA segments on which it is
+  long constant_curvature_segments = 0;  ///< arcs, not checked
   double max_curvature_jump = 0;  ///< largest jump of the B-spline's curvature at a knot
   std::string continuity = "G1";  ///< at every knot (C1 in the arc-length parameter)
 };
@@ -70,6 +73,6 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options =
 /// The curvature check of ExportInfo on a B-spline made by to_bspline, on its Bézier pieces
 /// (export/write.hpp bezier_pieces): segment k's spans are those between its joints' knots.
 bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments = nullptr,
-                        double* max_jump = nullptr);
+                        double* max_jump = nullptr, long* constant_segments = nullptr);
 
 }  // namespace lac
