@@ -20,11 +20,23 @@ std::string row_path(const std::string& path, long row) {
   return path.substr(0, at) + "_row" + std::to_string(row) + path.substr(at);
 }
 
+/// A writer's InputError ("write_file: export: …") as the command's ("lac: export: …").
+template <class F>
+auto as_export_error(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    const std::string what = e.what(), key = ": export: ";
+    const size_t at = what.find(key);
+    throw_input_error("lac", "export", at == std::string::npos ? what : what.substr(at + key.size()));
+  }
+}
+
 }  // namespace
 
 void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common) {
   if (common.export_path.empty()) return;
-  const ExportFormat format = export_format_from_path(common.export_path);
+  const ExportFormat format = as_export_error([&] { return export_format_from_path(common.export_path); });
 #ifndef LAC_WITH_OCCT
   if (format == ExportFormat::step || format == ExportFormat::iges)
     throw_input_error("lac", "export", "'" + common.export_path + "': " + to_string(format) +
@@ -49,9 +61,9 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
   record_status(r.summary.status);
   if (r.usable()) {
 #ifdef LAC_WITH_OCCT
-    write_any(path, format, r.curve);
+    as_export_error([&] { write_any(path, format, r.curve); });
 #else
-    write_file(path, format, r.curve);
+    as_export_error([&] { write_file(path, format, r.curve); });
 #endif
   }
   report["export"] = {{"file", r.usable() ? Json(path) : Json(nullptr)},

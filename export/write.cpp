@@ -28,7 +28,7 @@ ExportFormat export_format_from_path(const std::string& path, const char* parame
   if (ext == "iges" || ext == "igs") return ExportFormat::iges;
   if (ext == "dxf") return ExportFormat::dxf;
   if (ext == "svg") return ExportFormat::svg;
-  throw_input_error("export", parameter,
+  throw_input_error("export_format_from_path", parameter,
                     "'" + path + "': the extension names no export format (.step, .stp, .iges, .igs, .dxf, .svg)");
 }
 
@@ -131,15 +131,15 @@ void write_svg(std::ostream& out, const BSpline& b) {
 
 void write_file(const std::string& path, ExportFormat format, const BSpline& b) {
   if (format == ExportFormat::step || format == ExportFormat::iges)
-    throw_input_error("export", "export",
+    throw_input_error("write_file", "export",
                       "'" + path + "': " + to_string(format) +
                           " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
   std::ofstream out(path, std::ios::binary);
-  if (!out) throw_input_error("export", "export", "'" + path + "': cannot open the file for writing");
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
   if (format == ExportFormat::dxf) write_dxf(out, b);
   else write_svg(out, b);
   out.flush();
-  if (!out) throw_input_error("export", "export", "'" + path + "': writing failed");
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
 }
 
 }  // namespace lac

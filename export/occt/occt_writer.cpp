@@ -72,7 +72,7 @@ void write_step(const std::string& path, const BSpline& b) {
     const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(c);
     STEPControl_Writer writer;
     if (writer.Transfer(edge, STEPControl_AsIs) != IFSelect_RetDone)
-      throw_input_error("export", "export", "'" + path + "': OpenCASCADE could not translate the curve to STEP");
+      throw_input_error("write_step", "export", "'" + path + "': OpenCASCADE could not translate the curve to STEP");
     // STEPControl_Writer::Write prints reals with 12 to 13 significant digits; the same model
     // through StepData_StepWriter with 17 ("%.16E", round-trip exact).
     const Handle(StepData_Protocol) protocol =
@@ -83,9 +83,9 @@ void write_step(const std::string& path, const BSpline& b) {
     out.SendModel(protocol);
     std::ofstream file(path, std::ios::binary);
     if (protocol.IsNull() || !file || !out.Print(file) || !file.flush())
-      throw_input_error("export", "export", "'" + path + "': cannot write the STEP file");
+      throw_input_error("write_step", "export", "'" + path + "': cannot write the STEP file");
   } catch (const Standard_Failure& e) {
-    throw_input_error("export", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
+    throw_input_error("write_step", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
   }
 }
 
@@ -96,7 +96,7 @@ void write_iges(const std::string& path, const BSpline& b) {
     const Handle(Geom_BSplineCurve) c = make_curve(b);
     IGESControl_Writer writer("MM", 0);
     if (!writer.AddGeom(c))
-      throw_input_error("export", "export", "'" + path + "': OpenCASCADE could not translate the curve to IGES");
+      throw_input_error("write_iges", "export", "'" + path + "': OpenCASCADE could not translate the curve to IGES");
     writer.ComputeModel();
     // IGESControl_Writer::Write prints reals with 10 significant digits (1e-10 relative, above a
     // tight tolerance); the same model through IGESData_IGESWriter with 17 ("%.16E", round-trip).
@@ -108,9 +108,9 @@ void write_iges(const std::string& path, const BSpline& b) {
     out.SendModel(protocol);
     std::ofstream file(path, std::ios::binary);
     if (!file || !out.Print(file) || !file.flush())
-      throw_input_error("export", "export", "'" + path + "': cannot write the IGES file");
+      throw_input_error("write_iges", "export", "'" + path + "': cannot write the IGES file");
   } catch (const Standard_Failure& e) {
-    throw_input_error("export", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
+    throw_input_error("write_iges", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
   }
 }
 
