@@ -7,7 +7,9 @@
 #include <cstdlib>
 
 #include "lac/common/error.hpp"
+#include "lac/constructions/chain.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/export/write.hpp"
 #include "lac/integrators/registry.hpp"
 #include "tests/export/random_curves.hpp"
 
@@ -150,6 +152,56 @@ TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
   EXPECT_GT(tested, n * 9 / 10);
   std::printf("%d curves (%d more inaccurate by their positions); largest measured / bound = %.3g\n", tested,
               position_limited, max_ratio);
+}
+
+}  // namespace
+}  // namespace lac
+
+namespace lac {
+namespace {
+
+// A G1 chain (curvature jumps at the points): the quintic B-spline is C1 there (knot ×4) with the
+// curve's own jump, C2 elsewhere; continuity G1; the bound holds.
+TEST(ToBspline, QuinticAtG1JointsIsC1) {
+  const ChainResult ch = solve_chain({.points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}}, .alpha = -1});
+  ASSERT_TRUE(ch.usable());
+  const PlanarCurve& c = ch.curve;
+  const ExportResult r = to_bspline(c, {.tolerance = 1e-7});
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  EXPECT_EQ(r.info.continuity, "G1");
+  std::vector<double> k;
+  std::vector<int> m;
+  r.curve.distinct_knots(k, m);
+  for (size_t j = 1; j < c.segments().size(); ++j) {
+    const auto it = std::find(k.begin(), k.end(), c.segment_start(j));
+    ASSERT_NE(it, k.end());
+    const double jump = std::abs(c.segments()[j].kappa_start() - c.segments()[j - 1].kappa_end());
+    EXPECT_EQ(m[it - k.begin()], jump > 1e-6 ? 4 : 3) << "joint " << j << " curvature jump " << jump;
+  }
+  for (size_t i = 1; i + 1 < m.size(); ++i) EXPECT_GE(m[i], 3);
+  EXPECT_LE(r.info.max_curvature_jump, 1e-9);  // beyond the curve's own jumps
+  EXPECT_LE(measured_deviation(c, r.curve, 12), r.info.max_deviation);
+}
+
+// bezier_pieces (knot insertion) reproduces the B-spline: each piece at its local parameter.
+TEST(ToBspline, BezierPiecesReproduceTheBspline) {
+  for (int degree : {3, 5}) {
+    const ExportResult r = to_bspline(acceptance_curve(), {.tolerance = 1e-5, .degree = degree});
+    ASSERT_TRUE(r.usable());
+    const auto pieces = bezier_pieces(r.curve);
+    std::vector<double> k;
+    std::vector<int> m;
+    r.curve.distinct_knots(k, m);
+    ASSERT_EQ(pieces.size() + 1, k.size());
+    for (size_t j = 0; j < pieces.size(); ++j)
+      for (double u : {0.0, 0.3, 0.7, 1.0}) {
+        std::vector<std::complex<double>> p = pieces[j];
+        for (size_t s = 1; s < p.size(); ++s)
+          for (size_t i = 0; i + s < p.size(); ++i) p[i] = (1 - u) * p[i] + u * p[i + 1];
+        const double t = k[j] + u * (k[j + 1] - k[j]);
+        EXPECT_LE(std::abs(p[0] - r.curve.point_at(t)), 1e-13) << degree << " piece " << j << " u " << u;
+      }
+  }
 }
 
 }  // namespace
