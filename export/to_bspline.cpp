@@ -10,6 +10,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/export/write.hpp"
+#include "lac/integrators/quadrature.hpp"
 
 namespace lac {
 
@@ -282,13 +283,19 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
       const bool last = i + 1 == ends.size();
       const double s1 = last ? seg.length() : std::min(seg.length(), seg.scale() * (u1 - seg.ua()));
       const double h = seg.scale() * (u1 - u_prev);
+      // Two independent quadratures (adaptive Gauss–Kronrod, and the default Gauss–Legendre): the
+      // position is Gauss–Kronrod's, its error the larger of its estimate and the two's difference,
+      // so that one method's estimate missing its error (e.g. κ ∝ |q|^(−1/α) with α near 0 steep
+      // at an inflection) shows up as a disagreement.
+      const PositionResult pk = position_at(seg, s1, GaussKronrod{});
       const PositionResult pr = position_at(seg, s1);
-      r.summary.evaluations += pr.evaluations;
-      if (!usable(pr.status) || !std::isfinite(pr.error_estimate))
-        return fail(Status::numerical_failure,
-                    "the position at s = " + format_number(s_base + s1) + " failed: " + pr.message);
-      std::complex<double> p1 = pr.point.position;
-      double err1 = pr.error_estimate;
+      r.summary.evaluations += pk.evaluations + pr.evaluations;
+      for (const PositionResult* x : {&pk, &pr})
+        if (!usable(x->status) || !std::isfinite(x->error_estimate))
+          return fail(Status::numerical_failure,
+                      "the position at s = " + format_number(s_base + s1) + " failed: " + x->message);
+      std::complex<double> p1 = pk.point.position;
+      double err1 = std::max({pk.error_estimate, pr.error_estimate, std::abs(pk.point.position - pr.point.position)});
       std::complex<double> t1 = std::polar(1.0, seg.theta_at(s1));
       std::complex<double> n1 = std::complex<double>(0, seg.kappa_at(s1)) * t1;
       const int degree = bounds[i].degree;

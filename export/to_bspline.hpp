@@ -1,28 +1,29 @@
 #pragma once
-// A planar LA curve (a PlanarCurve: LA segments joined G1 or G2) as a cubic B-spline with a
-// certified bound on the distance between the two, for CAD export (docs/export.md).
+// A planar LA curve (a PlanarCurve: LA segments joined G1 or G2) as a quintic (default) or cubic
+// B-spline with a certified bound on the distance between the two, for CAD export (docs/export.md).
 //
 // Each LA segment is cut into spans [s0, s1] (the joints and an inflection are span ends); on a
-// span the B-spline is the cubic Hermite interpolant in arc length of the curve c(s): the end
-// positions, and the unit tangents e^{iθ} times the span length h, i.e. the Bézier points
-//   P0,  P0 + (h/3) e^{iθ0},  P1 − (h/3) e^{iθ1},  P1.
-// Consecutive spans share the end point and the tangent vector, so the B-spline, with the arc
-// length as parameter and every interior knot double, is C1 (G1): 2N + 2 control points for N
-// spans (the Bézier junctions are implied by C1); its curvature equals the LA
-// curve's only to O(h²) at a knot (reported as max_curvature_jump).
+// span the B-spline is the Hermite interpolant in arc length of the curve c(s), with T = e^{iθ},
+// N = c'' = iκT at the ends and h the span length:
+//   cubic   (c, c'):       P0,  P0 + (h/3)T0,  P1 − (h/3)T1,  P1
+//   quintic (c, c', c''):  P0,  P0 + (h/5)T0,  P0 + (2h/5)T0 + (h²/20)N0,  (mirrored at P1)
+// Consecutive spans share these end data, so with the arc length as parameter the cubic is C1
+// (G1; interior knots double, 2N + 2 control points for N spans; its curvature matches κ only to
+// O(h²) at a knot) and the quintic is C2 inside each LA segment and at G2 joints (knots triple,
+// 3N + 3 points; curvature continuous, G2), C1 at a joint where the curve's curvature jumps.
 //
-// The bound is proven for the interpolation (Peano kernels of the Hermite cubic, with rigorous
-// bounds of |κ|, |κ'|, |κ''| on the span: on a span without an inflection each is a monotone
-// function of s, so its largest value is at an end): per span the least of
-//   h⁴/384 · (|κ''| + 3|κ||κ'| + |κ|³)   (|c⁗| ≤ that, c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ})
-//   h³/96  · (|κ'| + κ²)                  (|c'''|; used where κ'' is unbounded, α ∈ (−1, −1/2) at an inflection)
-//   h²/16  · |κ|                           (|c''|; used where κ' is unbounded, α < −1 at an inflection)
-// plus the end positions' quadrature error estimates, the joint gaps of the chain (position and
-// tangent), and rounding. The B-spline is within max_deviation of the curve at the same arc
-// length, hence in Hausdorff distance.
+// The interpolation bound is proven: per span the least over m of C_m h^m M_m, C_m the Peano
+// constant of the interpolant for the m-th derivative and M_m ≥ |c^(m)| a polynomial in bounds
+// of |κ^(j)| on the span (c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ}, M₄ = |κ''| + 3|κ||κ'| + |κ|³; cubic:
+// h⁴/384 M₄, h³/96 M₃, h²/16 |κ|; quintic: h⁶/46080 M₆ … 0.0062 h³ M₃). On a span without an
+// inflection each |κ^(j)| is a monotone function of s (a power of the LA law's t), so its largest
+// value is at an end; where κ' is unbounded (α < −1 at an inflection) a quintic span is the cubic
+// one raised to degree 5. Added: the end positions' quadrature error estimates, the chain's joint
+// gaps (position, tangent, curvature) and rounding. The B-spline is within max_deviation of the
+// curve at the same arc length, hence in Hausdorff distance.
 //
 //   auto r = lac::to_bspline(curve, {.tolerance = 1e-6});
-//   if (r.usable()) write_dxf("curve.dxf", r.curve);   // r.info.max_deviation ≤ 1e-6
+//   if (r.usable()) lac::write_file("curve.dxf", lac::ExportFormat::dxf, r.curve);  // export/write.hpp
 #include <string>
 
 #include "lac/common/summary.hpp"
