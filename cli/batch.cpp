@@ -11,6 +11,8 @@ namespace lac::cli {
 
 namespace {
 
+long g_batch_row = 0;
+
 /// Output collected in memory and written in large blocks (per-row writes to std::cout would
 /// cost more than a G1 solve).
 class Sink {
@@ -131,8 +133,12 @@ void run_batch(CLI::App& sub, const CommonArgs& common, const std::function<Repo
   }
   Sink sink;
   BatchWriter writer(sink, common.format == "csv");
+  struct RowReset {
+    ~RowReset() { g_batch_row = 0; }
+  } reset;
   for (long row = 1; read_csv_record(in, cells); ++row) {
     restore();
+    g_batch_row = row;
     try {
       if (cells.size() != header.size())
         throw_input_error("lac", "batch", "row has " + std::to_string(cells.size()) + " fields; the header has " +
@@ -166,6 +172,8 @@ void run_batch(CLI::App& sub, const CommonArgs& common, const std::function<Repo
 }
 
 }  // namespace
+
+long current_batch_row() { return g_batch_row; }
 
 void run_command(CLI::App& sub, const CommonArgs& common, const std::function<Report()>& solve,
                  const std::function<void()>& restore) {

@@ -15,6 +15,9 @@
 
 namespace lac::cli {
 
+/// The row of the batch being solved (1-based), 0 outside batch mode.
+long current_batch_row();
+
 /// Runs one problem (`solve` on the options as parsed) or the batch of `common.batch`, restoring
 /// the parsed options with `restore` before each row.
 void run_command(CLI::App& sub, const CommonArgs& common, const std::function<Report()>& solve,

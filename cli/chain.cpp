@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "cli/batch.hpp"
+#include "cli/export.hpp"
 #include "cli/options.hpp"
 #include "cli/quadrature_args.hpp"
 #include "lac/constructions/chain.hpp"
@@ -65,6 +66,7 @@ Report solve(const ChainArgs& a) {
   Json& j = r.json;
   if (explicit_integrator) j["integrator"] = describe(o.g1.integrator);
   if (res.usable()) add_planar_curve(j, res.curve);
+  add_export(j, res.usable() ? &res.curve : nullptr, a.common);
   Json thetas = Json::array(), kappas = Json::array();
   for (double t : res.info.thetas) thetas.push_back(number(t));
   for (double k : res.info.kappas) kappas.push_back(number(k));
@@ -108,6 +110,7 @@ void setup(CLI::App& app) {
                   "Largest total turning (rad) of a pair searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_quadrature_options(*sub, a->quadrature, "auto (each construction's default)");
   add_common_options(*sub, a->common, true);
+  add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);
 }
 

@@ -1,3 +1,4 @@
+#include "cli/export.hpp"
 #include "cli/g1_hermite_args.hpp"
 
 namespace lac::cli {
@@ -22,6 +23,7 @@ void add_g1_hermite_options(CLI::App& sub, G1HermiteArgs& a) {
   sub.add_option("--max-turning", a.max_turning,
                  "Largest total turning (rad) searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_common_options(sub, a.common, true);
+  add_export_options(sub, a.common);
 }
 
 void add_hermite_data_options(CLI::App& sub, G1HermiteArgs& a) {
@@ -56,6 +58,7 @@ Report g1_hermite_report(const G1HermiteProblem& problem, const G1HermiteArgs& a
   Json& j = r.json;
   if (o.verify) j["integrator"] = describe(o.integrator);
   if (g.usable()) add_planar_curve(j, g.curve);
+  add_export(j, g.usable() ? &g.curve : nullptr, a.common);
   j["inflection"] = g.usable() ? number(g.info.inflection) : Json(nullptr);
   const G1HermiteInfo& info = g.info;
   j["info"] = {{"shape", std::string(to_string(info.shape))},

@@ -1,5 +1,6 @@
 // lac g2: G2 Hermite interpolation by a triple LA curve [Miura et al. 2013] §3; see docs/hermite.md.
 #include "cli/batch.hpp"
+#include "cli/export.hpp"
 #include "cli/options.hpp"
 #include "cli/quadrature_args.hpp"
 #include "lac/constructions/g2_hermite.hpp"
@@ -38,6 +39,7 @@ Report solve(const G2Args& a) {
   Json& j = r.json;
   j["integrator"] = describe(o.integrator);
   if (res.usable()) add_planar_curve(j, res.curve);
+  add_export(j, res.usable() ? &res.curve : nullptr, a.common);
   j["info"] = {{"start", std::string(to_string(res.info.start_used))},
                {"start_seconds", res.info.start_seconds},
                {"h", res.usable() ? number(res.info.h) : Json(nullptr)},
@@ -71,6 +73,7 @@ void setup(CLI::App& app) {
   sub->add_option("--max-turning", a->max_turning,
                   "Largest total turning (rad) searched without --winding, [pi, 200 pi] (default 4 pi)");
   add_common_options(*sub, a->common, true);
+  add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);
 }
 

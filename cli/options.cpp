@@ -26,6 +26,19 @@ void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
       ->capture_default_str();
 }
 
+void add_export_options(CLI::App& sub, CommonArgs& a) {
+  sub.add_option("--export", a.export_path,
+                 "Write the curve as a B-spline within a certified distance --export-tol: FILE.step/.stp (STEP), "
+                 ".iges/.igs (IGES entity 126), .dxf (SPLINE), .svg (cubic Bezier path); with --batch one file per "
+                 "row, FILE with _row<N> before the extension");
+  sub.add_option("--export-tol", a.export_tol,
+                 "Bound on the exported curve's distance from the LA curve, absolute (default 1e-6 x curve length); "
+                 "a larger certified bound makes the result inaccurate (exit 3)");
+  sub.add_option("--export-degree", a.export_degree,
+                 "5: quintic spans, curvature continuous (G2; default) | 3: cubic spans (G1; the default and only "
+                 "choice for .svg, whose paths hold cubic Beziers)");
+}
+
 int sample_count(const CommonArgs& a) {
   if (a.samples == 1 || a.samples < 0 || a.samples > 1'000'000)
     throw_input_error("lac", "samples", a.samples, "0 or [2, 1000000]");

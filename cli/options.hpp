@@ -26,10 +26,19 @@ struct CommonArgs {
   /// --accept: the accept bound relative to the size scale (common/accuracy.hpp); a result whose
   /// achieved error exceeds it is inaccurate (exit 3).
   double accept = kDefaultAccept;
+  /// --export FILE (planar constructions, cli/export.hpp): the curve as a certified B-spline.
+  std::string export_path;
+  /// --export-tol: bound on the export's deviation, absolute (default 1e-6 x the curve's length).
+  std::optional<double> export_tol;
+  /// --export-degree: 5 (G2; the default) or 3 (G1; the only one for .svg, which holds cubic Béziers).
+  std::optional<int> export_degree;
 };
 
 /// Adds --samples, --format (json | csv, and svg when `planar`), --batch, --degrees and --accept.
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
+
+/// Adds --export FILE, --export-tol T and --export-degree D (the planar constructions: cli/export.hpp).
+void add_export_options(CLI::App& sub, CommonArgs& a);
 
 /// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError
 /// "samples" unless 0 or in [2, 10^6].

@@ -1,3 +1,4 @@
+#include "cli/export.hpp"
 #include "cli/triangle_args.hpp"
 
 namespace lac::cli {
@@ -7,6 +8,7 @@ void add_triangle_options(CLI::App& sub, TriangleArgs& a) {
   sub.add_option("--solver", a.solver, "Root finder: " + solver_names(root_methods()))->capture_default_str();
   add_quadrature_options(sub, a.quadrature, "auto (the construction's default, gk-tanh-sinh)");
   add_common_options(sub, a.common, true);
+  add_export_options(sub, a.common);
 }
 
 PreparedTriangle prepare_triangle(const TriangleArgs& a) {
@@ -31,6 +33,7 @@ Report triangle_report(const TriangleResult& g, const TriangleArgs& a, const Pre
   Json& j = r.json;
   if (p.explicit_integrator) j["integrator"] = describe(p.options.integrator);
   if (g.usable()) add_planar_curve(j, g.curve);
+  add_export(j, g.usable() ? &g.curve : nullptr, a.common);
   const TriangleInfo& info = g.info;
   Json i;
   i["segment0_at_a0"] = info.segment0_at_a0;

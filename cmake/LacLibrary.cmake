@@ -12,13 +12,16 @@
 # Link dependencies: Boost and Eigen appear in the public headers (PUBLIC); Ceres and libcerf only
 # in .cpp files (PRIVATE: a consumer of the shared library does not link them; a consumer of the
 # static library links them through $<LINK_ONLY:...>, and lacConfig.cmake finds them then).
-set(LAC_LIBRARY_FOLDERS common special integrators solvers curves geometry constructions)
+set(LAC_LIBRARY_FOLDERS common special integrators solvers curves geometry constructions export)
 
 set(LAC_SOURCES "")
 set(LAC_HEADERS "")
 foreach(folder IN LISTS LAC_LIBRARY_FOLDERS)
   file(GLOB_RECURSE folder_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.cpp)
   file(GLOB_RECURSE folder_headers CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/${folder}/*.hpp)
+  # export/occt/ is the optional OpenCASCADE component (cmake/LacExportOcct.cmake), not in lac.
+  list(FILTER folder_sources EXCLUDE REGEX "/export/occt/")
+  list(FILTER folder_headers EXCLUDE REGEX "^export/occt/")
   list(APPEND LAC_SOURCES ${folder_sources})
   list(APPEND LAC_HEADERS ${folder_headers})
 endforeach()

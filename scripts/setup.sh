@@ -12,6 +12,8 @@ packages=(
   clang libclang-rt-14-dev                # libFuzzer targets and sanitizer runtimes
   python3 python3-mpmath python3-numpy python3-matplotlib  # reference generators, figures
   python3-dev pybind11-dev python3-pybind11 python3-pytest python3-distributed  # Python module lac, its tests, Dask sweeps
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev  # STEP/IGES export (optional lac::export)
+  python3-ezdxf                           # reads the exported DXF back in the tests
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,85 @@
+#include "cli/export.hpp"
+
+#include "cli/batch.hpp"
+#include "lac/common/error.hpp"
+#include "lac/export/to_bspline.hpp"
+#include "lac/export/write.hpp"
+#ifdef LAC_WITH_OCCT
+#include "lac/export/occt/occt_writer.hpp"
+#endif
+
+namespace lac::cli {
+
+namespace {
+
+/// In batch mode FILE gets _row<N> before its extension (out/c.step → out/c_row3.step).
+std::string row_path(const std::string& path, long row) {
+  if (row <= 0) return path;
+  const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  const size_t at = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? path.size() : dot;
+  return path.substr(0, at) + "_row" + std::to_string(row) + path.substr(at);
+}
+
+/// A writer's InputError ("write_file: export: …") as the command's ("lac: export: …").
+template <class F>
+auto as_export_error(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    const std::string what = e.what(), key = ": export: ";
+    const size_t at = what.find(key);
+    throw_input_error("lac", "export", at == std::string::npos ? what : what.substr(at + key.size()));
+  }
+}
+
+}  // namespace
+
+void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common) {
+  if (common.export_path.empty()) return;
+  const ExportFormat format = as_export_error([&] { return export_format_from_path(common.export_path); });
+#ifndef LAC_WITH_OCCT
+  if (format == ExportFormat::step || format == ExportFormat::iges)
+    throw_input_error("lac", "export", "'" + common.export_path + "': " + to_string(format) +
+                                           " needs OpenCASCADE, and this lac was built without it (LAC_WITH_OCCT=OFF); "
+                                           ".dxf and .svg need none");
+#endif
+  if (common.export_tol && !(*common.export_tol > 0 && std::isfinite(*common.export_tol)))
+    throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
+  if (common.export_degree && *common.export_degree != 3 && *common.export_degree != 5)
+    throw_input_error("lac", "export-degree", *common.export_degree, "3 or 5");
+  if (format == ExportFormat::svg && common.export_degree.value_or(3) != 3)
+    throw_input_error("lac", "export-degree", *common.export_degree, "3 for .svg (SVG paths hold cubic Bezier curves)");
+  if (curve == nullptr) {
+    report["export"] = nullptr;
+    return;
+  }
+  const std::string path = row_path(common.export_path, current_batch_row());
+  ExportOptions o;
+  if (common.export_tol) o.tolerance = *common.export_tol;
+  o.degree = common.export_degree.value_or(format == ExportFormat::svg ? 3 : 5);
+  const ExportResult r = to_bspline(*curve, o);
+  record_status(r.summary.status);
+  if (r.usable()) {
+#ifdef LAC_WITH_OCCT
+    as_export_error([&] { write_any(path, format, r.curve); });
+#else
+    as_export_error([&] { write_file(path, format, r.curve); });
+#endif
+  }
+  report["export"] = {{"file", r.usable() ? Json(path) : Json(nullptr)},
+                      {"format", to_string(format)},
+                      {"degree", r.usable() ? Json(r.curve.degree) : Json(nullptr)},
+                      {"control_points", r.usable() ? Json(r.curve.control_points.size()) : Json(nullptr)},
+                      {"max_deviation", number(r.info.max_deviation)},
+                      {"curvature_monotone", r.usable() ? Json(r.info.curvature_monotone) : Json(nullptr)},
+                      {"tolerance", number(r.info.tolerance)},
+                      {"spans", r.info.spans},
+                      {"continuity", r.info.continuity},
+                      {"monotone_segments", r.info.monotone_segments},
+                      {"constant_curvature_segments", r.info.constant_curvature_segments},
+                      {"max_curvature_jump", number(r.info.max_curvature_jump)},
+                      {"status", std::string(to_string(r.summary.status))},
+                      {"message", r.summary.message.empty() ? Json(nullptr) : Json(r.summary.message)}};
+}
+
+}  // namespace lac::cli

@@ -1,0 +1,18 @@
+#pragma once
+// --export FILE on the planar constructions (docs/export.md): the curve as a B-spline with a
+// certified deviation bound (export/to_bspline.hpp), written in the format of FILE's extension.
+#include "cli/options.hpp"
+#include "cli/report.hpp"
+
+namespace lac::cli {
+
+/// Without --export: nothing. Else writes the file (curve usable) and sets report["export"] =
+/// {file, format, degree, control_points, max_deviation (the certified bound), curvature_monotone,
+/// tolerance, spans, continuity (G2 or G1), max_curvature_jump, status, message}; degree 5 unless
+/// --export-degree 3 or .svg; the export's status is
+/// recorded (inaccurate when the bound exceeds --export-tol: exit 3). A curve that is not usable
+/// gives "export": null and writes nothing. InputError "export" for an unknown extension, a file
+/// that cannot be written, or STEP/IGES in a build without OpenCASCADE.
+void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common);
+
+}  // namespace lac::cli

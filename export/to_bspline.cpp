@@ -1,0 +1,411 @@
+#include "lac/export/to_bspline.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "lac/common/error.hpp"
+#include "lac/export/write.hpp"
+#include "lac/integrators/quadrature.hpp"
+
+namespace lac {
+
+namespace {
+
+constexpr const char* kWho = "to_bspline";
+
+// Peano-kernel constants of the Hermite interpolants on [0, 1]: C[m] = max over t of ∫|K_m(t, τ)| dτ,
+// where f(t) − (Hf)(t) = ∫ K_m(t, τ) f^(m)(τ) dτ, m the derivative used (tests/reference/
+// export_kernels.py; rounded up). Cubic (f, f' at both ends), m = 2, 3, 4: 0.0624987 < 1/16, 1/96,
+// 1/384 (the classical t²(1−t)²/24). Quintic (f, f', f'' at both ends), m = 3 … 6: 1/46080 at m = 6
+// (t³(1−t)³/720), 1/10240 at m = 5, 0.0061849 and 0.00067702 at m = 3, 4; no m = 2 (the
+// interpolant takes f'').
+constexpr std::array<double, 7> kCubic{0, 0, 1.0 / 16.0, 1.0 / 96.0 * (1 + 1e-9), 1.0 / 384.0 * (1 + 1e-9), 0, 0};
+constexpr std::array<double, 7> kQuintic{0, 0, 0, 0.00619, 0.000678, 0.0000977, 1.0 / 46080.0 * (1 + 1e-9)};
+// Relative slack on the derivative bounds for the rounding of q, κ and the powers at the span ends.
+constexpr double kSlack = 1e-9;
+
+/// |K^(j)(q)|, j = 0 … 4 (la_law.hpp): a power of |t| (t the plain q, or σ(1 − αq) in the offset
+/// form, where dt/dq = −σα), e^q for α = 0: monotone in |t| on each side of t = 0; +inf where a
+/// negative power meets t = 0.
+double abs_dK(const LaLaw& law, double q, int order) {
+  if (law.alpha == 0) return std::exp(q);
+  const double b = -1.0 / law.alpha;
+  double coeff = 1;
+  for (int i = 0; i < order; ++i) coeff *= std::abs(b - i) * (law.offset ? std::abs(law.alpha) : 1.0);
+  if (coeff == 0) return 0.0;
+  const double t = law.offset ? std::abs(1.0 - law.alpha * q) : std::abs(q);
+  return coeff * std::pow(t, b - order);
+}
+
+/// Majorants of |c^(m)|, m = 1 … 6, polynomials in k_j ≥ |κ^(j)| (j = 0 … 4): c^(m) = A_m e^{iθ} with
+/// A_1 = 1, A_{m+1} = A_m' + iκ A_m, so |A_{m+1}| ≤ D(M_m) + k_0 M_m, D the formal derivative with
+/// k_j' = k_{j+1} (all coefficients positive). E.g. M_4 = k_2 + 3 k_0 k_1 + k_0³, from
+/// c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ}.
+class Majorants {
+ public:
+  using Exponents = std::array<int, 5>;
+  Majorants() {
+    polys_[1][Exponents{}] = 1.0;
+    for (int m = 1; m < 6; ++m) {
+      for (const auto& [e, c] : polys_[m]) {
+        for (int j = 0; j + 1 < 5; ++j) {
+          if (e[j] == 0) continue;
+          Exponents d = e;
+          --d[j];
+          ++d[j + 1];
+          polys_[m + 1][d] += c * e[j];
+        }
+        Exponents k = e;
+        ++k[0];
+        polys_[m + 1][k] += c;
+      }
+    }
+  }
+  double operator()(int m, const std::array<double, 5>& k) const {
+    double sum = 0;
+    for (const auto& [e, c] : polys_[m]) {
+      double term = c;
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < e[j]; ++i) term *= k[j];
+      sum += std::isnan(term) ? HUGE_VAL : term;  // 0 · inf: an unbounded factor
+    }
+    return sum;
+  }
+
+ private:
+  std::array<std::map<Exponents, double>, 7> polys_;
+};
+
+struct SpanBound {
+  double value = HUGE_VAL;  // the interpolation bound
+  int order = 2;            // the derivative it uses (its rate in h)
+  int degree = 3;           // the Hermite interpolant: 3 (c, c') or 5 (c, c', c'')
+  std::array<double, 7> by_order{};  // the bound of each order of that degree (0: unused)
+};
+
+/// The interpolation bound on the part [u0, u1] of `seg` (no inflection inside) of the Hermite
+/// interpolant of `degree`; for degree 5 where κ' is unbounded (α < −1 at an inflection), the cubic's.
+SpanBound span_bound(const LaSegment& seg, double u0, double u1, int degree) {
+  static const Majorants majorants;
+  const LaLaw& law = seg.law();
+  const double l = seg.scale(), m = std::abs(seg.normalized().slope());
+  const double q0 = seg.q_at(u0), q1 = seg.q_at(u1);
+  const double h = l * (u1 - u0);
+  std::array<double, 5> k{};
+  k[0] = (1 + kSlack) * std::max(std::abs(law.kappa_of_q(q0)), std::abs(law.kappa_of_q(q1))) / l;
+  for (int j = 1; j < 5; ++j)  // κ^(j) = K^(j)(q) (dq/du)^j / ℓ^(j+1)
+    k[j] = (1 + kSlack) * std::max(abs_dK(law, q0, j), abs_dK(law, q1, j)) * std::pow(m, j) / std::pow(l, j + 1);
+  SpanBound best;
+  for (int d : {degree, 3}) {
+    const auto& C = d == 3 ? kCubic : kQuintic;
+    best = {HUGE_VAL, 2, d, {}};
+    for (int order = 2; order <= d + 1; ++order) {
+      if (C[order] == 0) continue;
+      const double v = C[order] * std::pow(h, order) * majorants(order, k);
+      best.by_order[order] = v;
+      if (v < best.value) best.value = v, best.order = order;
+    }
+    if (best.value < HUGE_VAL) break;
+  }
+  return best;
+}
+
+/// Splits [u0, u1] until every span's bound is at most `target`, appending the spans' ends after
+/// u0 and their bounds. False when the cap on spans is reached.
+bool split(const LaSegment& seg, double u0, double u1, int degree, double target, long cap,
+           std::vector<double>& ends, std::vector<SpanBound>& bounds) {
+  const SpanBound b = span_bound(seg, u0, u1, degree);
+  if (b.value <= target || !(u1 - u0 > 4 * DBL_EPSILON * std::max(std::abs(u0), std::abs(u1)))) {
+    if (static_cast<long>(ends.size()) >= cap) return false;
+    ends.push_back(u1);
+    bounds.push_back(b);
+    return true;
+  }
+  // Into n equal parts, n the least over the orders m of (bound_m / target)^(1/m) (bound_m ∝ h^m,
+  // the derivative bounds do not grow on a part), at least 2 and at most 64 per level.
+  double n_real = HUGE_VAL;
+  for (int m = 2; m < 7; ++m)
+    if (b.by_order[m] > 0 && std::isfinite(b.by_order[m]))
+      n_real = std::min(n_real, std::ceil(std::pow(b.by_order[m] / target, 1.0 / m) * 1.01));
+  const int n = static_cast<int>(std::clamp(std::isfinite(n_real) ? n_real : 2.0, 2.0, 64.0));
+  double a = u0;
+  for (int i = 1; i <= n; ++i) {
+    const double c = i == n ? u1 : u0 + (u1 - u0) * i / n;
+    if (!split(seg, a, c, degree, target, cap, ends, bounds)) return false;
+    a = c;
+  }
+  return true;
+}
+
+using Piece = std::vector<std::complex<double>>;
+
+/// The same Bézier curve one degree higher (exact up to rounding).
+Piece elevate(const Piece& p) {
+  const size_t n = p.size() - 1;
+  Piece q(n + 2);
+  q[0] = p[0];
+  q[n + 1] = p[n];
+  for (size_t i = 1; i <= n; ++i) {
+    const double a = static_cast<double>(i) / static_cast<double>(n + 1);
+    q[i] = a * p[i - 1] + (1 - a) * p[i];
+  }
+  return q;
+}
+
+std::complex<double> casteljau(Piece p, double t) {
+  for (size_t r = 1; r < p.size(); ++r)
+    for (size_t i = 0; i + r < p.size(); ++i) p[i] = (1 - t) * p[i] + t * p[i + 1];
+  return p[0];
+}
+
+/// Signed curvature of a Bézier piece at t ∈ [0, 1] (from its first and second hodographs).
+double bezier_curvature(const Piece& p, double t) {
+  const size_t n = p.size() - 1;
+  Piece d1(n), d2(n - 1);
+  for (size_t i = 0; i < n; ++i) d1[i] = static_cast<double>(n) * (p[i + 1] - p[i]);
+  for (size_t i = 0; i + 1 < n; ++i) d2[i] = static_cast<double>(n - 1) * (d1[i + 1] - d1[i]);
+  const std::complex<double> v = casteljau(d1, t), a = casteljau(d2, t);
+  const double speed = std::abs(v);
+  return (v.real() * a.imag() - v.imag() * a.real()) / (speed * speed * speed);
+}
+
+}  // namespace
+
+bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump,
+                        long* constant_segments) {
+  const auto pieces = bezier_pieces(b);
+  std::vector<double> knots;
+  std::vector<int> mult;
+  b.distinct_knots(knots, mult);  // piece j spans [knots[j], knots[j + 1]]
+  double jump = 0;
+  long good = 0, constant = 0;
+  size_t j = 0;
+  double previous_end_kappa = NAN;
+  for (size_t k = 0; k < curve.segments().size(); ++k) {
+    const LaSegment& seg = curve.segments()[k];
+    // A curvature constant to 1e-9 (an arc, up to the construction's rounding): no direction to
+    // keep; a polynomial's curvature cannot be constant, so such a segment is not checked.
+    const double kscale = std::max(std::abs(seg.kappa_start()), std::abs(seg.kappa_end())) + 1.0 / curve.length();
+    const double dk = seg.kappa_end() - seg.kappa_start();
+    const double dir = dk > 1e-9 * kscale ? 1.0 : dk < -1e-9 * kscale ? -1.0 : 0.0;
+    if (dir == 0) ++constant;
+    const double end = curve.segment_start(k + 1);
+    // The LA curve's own curvature jump at the joint before this segment (0 for G2).
+    const double la_jump = k == 0 ? 0.0 : seg.kappa_start() - curve.segments()[k - 1].kappa_end();
+    std::vector<double> values;
+    double scale = std::max(std::abs(seg.kappa_start()), std::abs(seg.kappa_end()));
+    for (bool first_span = true; j < pieces.size() && j + 1 < knots.size() && knots[j + 1] <= end; ++j) {
+      const double first = bezier_curvature(pieces[j], 0.0);
+      if (std::isfinite(previous_end_kappa))
+        jump = std::max(jump, std::abs(first - previous_end_kappa - (first_span ? la_jump : 0.0)));
+      first_span = false;
+      for (int i = 0; i <= 32; ++i) values.push_back(bezier_curvature(pieces[j], i / 32.0));
+      previous_end_kappa = values.back();
+    }
+    for (double v : values) scale = std::max(scale, std::abs(v));
+    const double slack = 1e-9 * scale;
+    bool up = true, down = true;
+    for (size_t i = 1; i < values.size(); ++i) {
+      if (values[i] < values[i - 1] - slack) up = false;
+      if (values[i] > values[i - 1] + slack) down = false;
+    }
+    if (!values.empty() && ((dir > 0 && up) || (dir < 0 && down))) ++good;
+  }
+  if (monotone_segments) *monotone_segments = good;
+  if (constant_segments) *constant_segments = constant;
+  if (max_jump) *max_jump = jump;
+  return good + constant == static_cast<long>(curve.segments().size());
+}
+
+ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) {
+  const auto t_start = std::chrono::steady_clock::now();
+  if (curve.segments().empty()) throw_input_error(kWho, "curve", "an empty curve has nothing to export");
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
+  if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
+  if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
+  const int p = options.degree;
+  ExportResult r;
+  const double length = curve.length();
+  const double tol = options.tolerance > 0 ? options.tolerance : kDefaultExportTolerance * length;
+  r.info.tolerance = tol;
+  r.summary.accept = tol / length;
+  // 9/10 of the tolerance for the interpolation, the rest for positions and rounding; no finer
+  // than the rounding of the coordinates (a tolerance below it ends inaccurate without a flood of spans).
+  double extent = length;
+  for (const LaSegment& seg : curve.segments()) extent = std::max(extent, std::abs(seg.start()) + length);
+  const double target = std::max(0.9 * tol, 64 * DBL_EPSILON * extent);
+  auto fail = [&](Status status, std::string message) {
+    r.conclude(status, std::move(message));
+    r.summary.seconds = seconds_since(t_start);
+    return r;
+  };
+
+  // Every span as a Bézier piece of degree p, with the continuity of the junction after it (2: C2,
+  // 1: C1; the last one unused) and its knot.
+  std::vector<Piece> pieces;
+  std::vector<int> junction;
+  std::vector<double> knots{0.0};
+  double interpolation = 0, positions = 0, deviation = 0;
+  bool all_g2 = p == 5;
+  const auto& segs = curve.segments();
+  for (size_t k = 0; k < segs.size(); ++k) {
+    const LaSegment& seg = segs[k];
+    std::vector<double> ends;
+    std::vector<SpanBound> bounds;
+    const long cap = options.max_spans - static_cast<long>(pieces.size());
+    const auto infl = seg.inflection_u();
+    bool within_cap;
+    if (infl && *infl > seg.ua() && *infl < seg.ub()) {
+      within_cap = split(seg, seg.ua(), *infl, p, target, cap, ends, bounds) &&
+                   split(seg, *infl, seg.ub(), p, target, cap, ends, bounds);
+    } else {
+      within_cap = split(seg, seg.ua(), seg.ub(), p, target, cap, ends, bounds);
+    }
+    if (!within_cap)
+      return fail(Status::max_iterations, "more than max_spans = " + std::to_string(options.max_spans) +
+                                              " spans needed for tolerance " + format_number(tol));
+    const double s_base = curve.segment_start(k);
+    // The segment's first point, tangent and c'' = iκ e^{iθ}: its own start (exact), closed forms
+    // (the previous segment's last span ended on the same values).
+    std::complex<double> p0 = seg.start();
+    double err0 = 0;
+    std::complex<double> t0 = std::polar(1.0, seg.theta_start());
+    std::complex<double> n0 = std::complex<double>(0, seg.kappa_start()) * t0;
+    double u_prev = seg.ua();
+    for (size_t i = 0; i < ends.size(); ++i) {
+      const double u1 = ends[i];
+      const bool last = i + 1 == ends.size();
+      const double s1 = last ? seg.length() : std::min(seg.length(), seg.scale() * (u1 - seg.ua()));
+      const double h = seg.scale() * (u1 - u_prev);
+      // Two independent quadratures (adaptive Gauss–Kronrod, and the default Gauss–Legendre): the
+      // position is Gauss–Kronrod's, its error the larger of its estimate and the two's difference,
+      // so that one method's estimate missing its error (e.g. κ ∝ |q|^(−1/α) with α near 0 steep
+      // at an inflection) shows up as a disagreement.
+      const PositionResult pk = position_at(seg, s1, GaussKronrod{});
+      const PositionResult pr = position_at(seg, s1);
+      r.summary.evaluations += pk.evaluations + pr.evaluations;
+      for (const PositionResult* x : {&pk, &pr})
+        if (!usable(x->status) || !std::isfinite(x->error_estimate))
+          return fail(Status::numerical_failure,
+                      "the position at s = " + format_number(s_base + s1) + " failed: " + x->message);
+      std::complex<double> p1 = pk.point.position;
+      double err1 = std::max({pk.error_estimate, pr.error_estimate, std::abs(pk.point.position - pr.point.position)});
+      std::complex<double> t1 = std::polar(1.0, seg.theta_at(s1));
+      std::complex<double> n1 = std::complex<double>(0, seg.kappa_at(s1)) * t1;
+      const int degree = bounds[i].degree;
+      const SpanBound next_bound = i + 1 < bounds.size() ? bounds[i + 1] : SpanBound{};
+      int cont = degree == 5 && next_bound.degree == 5 ? 2 : 1;
+      double moved_t = 0, moved_n = 0;  // how far the end's tangent and c'' are moved (joint data)
+      if (last && k + 1 < segs.size()) {
+        // The chain's next segment starts at its own start point and θ: the B-spline uses those,
+        // and its κ when the joint is G2 (curvature gap ≤ 1e-6 of the curvatures' scale).
+        const LaSegment& next = segs[k + 1];
+        const std::complex<double> p_next = next.start(), t_next = std::polar(1.0, next.theta_start());
+        err1 += std::abs(p_next - p1);
+        moved_t = std::abs(t_next - t1);
+        p1 = p_next;
+        t1 = t_next;
+        const double gap = std::abs(next.kappa_start() - seg.kappa_end());
+        const bool g2 = gap <= 1e-6 * (std::abs(next.kappa_start()) + std::abs(seg.kappa_end()) + 1.0 / length);
+        const std::complex<double> n_own = n1;
+        n1 = std::complex<double>(0, g2 ? next.kappa_start() : seg.kappa_end()) * t1;
+        moved_n = std::abs(n1 - n_own);
+        cont = degree == 5 && g2 ? 2 : 1;  // the next segment's first span is checked below
+        if (!g2) all_g2 = false;
+      }
+      Piece piece;
+      double moved = 0;  // bound on the curve's displacement by moved_t, moved_n (Bernstein weights ≤ 0.41)
+      if (degree == 5) {
+        piece = {p0, p0 + (h / 5) * t0, p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
+                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1, p1 - (h / 5) * t1, p1};
+        moved = 0.41 * (3 * h / 5 * moved_t + h * h / 20 * moved_n);
+      } else {
+        piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
+        moved = 4.0 / 9.0 * h / 3 * moved_t;
+        if (p == 5) piece = elevate(elevate(piece));
+        if (p == 5) all_g2 = false;
+      }
+      // A junction is C2 only between two quintic Hermite spans sharing c'' (the previous one set it).
+      if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
+      pieces.push_back(std::move(piece));
+      junction.push_back(cont);
+      knots.push_back(last ? curve.segment_start(k + 1) : s_base + s1);
+      // Rounding: the control points (ulps of their size) and the closed-form θ (ulps of |θ|).
+      const double size = std::max(std::abs(p0), std::abs(p1)) + h;
+      const double rounding = 64 * DBL_EPSILON * size +
+                              h * 4 * DBL_EPSILON * (1 + std::max(std::abs(seg.theta_start()), std::abs(seg.theta_end())));
+      const double interp = bounds[i].value;
+      const double pos = std::max(err0, err1) + moved + rounding;
+      interpolation = std::max(interpolation, interp);
+      positions = std::max(positions, pos);
+      deviation = std::max(deviation, interp + pos);
+      p0 = p1;
+      t0 = t1;
+      n0 = n1;
+      err0 = err1;
+      u_prev = u1;
+    }
+  }
+
+  // The B-spline (blossoms of consecutive knots; docs/export.md): degree 3, every junction C1 (knot
+  // ×2): B0, then B1 B2 of each span, then the end. Degree 5: B0 B1, then B2 B3 of each span and
+  // at a junction C2 (knot ×3) the point f(a, b, b, b, c) = B3 + (c − a)/(b − a) (B4 − B3), at a
+  // junction C1 (knot ×4) B4 and the next span's B1; then B4 B5 of the last span.
+  BSpline& b = r.curve;
+  b.degree = p;
+  const size_t n = pieces.size();
+  for (int i = 0; i <= p; ++i) b.knots.push_back(0.0);
+  b.control_points.push_back(pieces[0][0]);
+  if (p == 5) b.control_points.push_back(pieces[0][1]);
+  for (size_t j = 0; j < n; ++j) {
+    const Piece& pc = pieces[j];
+    if (p == 3) {
+      b.control_points.push_back(pc[1]);
+      b.control_points.push_back(pc[2]);
+    } else {
+      b.control_points.push_back(pc[2]);
+      b.control_points.push_back(pc[3]);
+    }
+    if (j + 1 == n) break;
+    const int multiplicity = p - (p == 5 ? junction[j] : 1);
+    for (int i = 0; i < multiplicity; ++i) b.knots.push_back(knots[j + 1]);
+    if (p == 5) {
+      if (junction[j] == 2) {
+        const double a = knots[j], bb = knots[j + 1], c = knots[j + 2];
+        b.control_points.push_back(pc[3] + ((c - a) / (bb - a)) * (pc[4] - pc[3]));
+      } else {
+        b.control_points.push_back(pc[4]);
+        b.control_points.push_back(pieces[j + 1][1]);
+      }
+    }
+  }
+  if (p == 5) b.control_points.push_back(pieces.back()[4]);
+  b.control_points.push_back(pieces.back().back());
+  for (int i = 0; i <= p; ++i) b.knots.push_back(length);
+  r.info.continuity = all_g2 ? "G2" : "G1";
+  r.info.spans = static_cast<long>(n);
+  r.info.interpolation = interpolation;
+  r.info.positions = positions;
+  r.info.max_deviation = deviation;
+  r.info.curvature_monotone = curvature_monotone(b, curve, &r.info.monotone_segments, &r.info.max_curvature_jump,
+                                                 &r.info.constant_curvature_segments);
+  r.summary.error = deviation / length;
+  r.summary.error_estimate = deviation;
+  r.summary.iterations = static_cast<int>(std::min<long>(static_cast<long>(n), std::numeric_limits<int>::max()));
+  r.summary.seconds = seconds_since(t_start);
+  if (deviation <= tol) {
+    r.conclude(Status::ok, "");
+  } else {
+    r.conclude(Status::inaccurate, "certified deviation " + format_number(deviation) + " exceeds the tolerance " +
+                                       format_number(tol));
+  }
+  return r;
+}
+
+}  // namespace lac

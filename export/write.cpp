@@ -1,0 +1,145 @@
+#include "lac/export/write.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+
+#include "lac/common/error.hpp"
+
+namespace lac {
+
+namespace {
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+ExportFormat export_format_from_path(const std::string& path, const char* parameter) {
+  const size_t dot = path.find_last_of('.');
+  const size_t slash = path.find_last_of('/');
+  std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == "step" || ext == "stp") return ExportFormat::step;
+  if (ext == "iges" || ext == "igs") return ExportFormat::iges;
+  if (ext == "dxf") return ExportFormat::dxf;
+  if (ext == "svg") return ExportFormat::svg;
+  throw_input_error("export_format_from_path", parameter,
+                    "'" + path + "': the extension names no export format (.step, .stp, .iges, .igs, .dxf, .svg)");
+}
+
+std::vector<std::vector<std::complex<double>>> bezier_pieces(const BSpline& b) {
+  b.validate();
+  if (b.rational()) throw_input_error("bezier_pieces", "weights", "a polynomial (non-rational) B-spline");
+  const int p = b.degree;
+  std::vector<double> U = b.knots;
+  std::vector<std::complex<double>> P = b.control_points;
+  // Raise every interior knot to multiplicity p.
+  for (size_t k = static_cast<size_t>(p) + 1; k + p + 1 < U.size();) {
+    const double t = U[k];
+    size_t last = k;
+    while (last + 1 < U.size() && U[last + 1] == t) ++last;
+    const int r = static_cast<int>(last - k + 1);
+    if (last + p + 1 >= U.size()) break;  // the end knots
+    for (int times = r; times < p; ++times) {
+      const int rr = times;
+      const size_t kk = k + rr - 1;  // index of the last copy of t
+      std::vector<std::complex<double>> Q;
+      Q.reserve(P.size() + 1);
+      for (size_t i = 0; i + p <= kk; ++i) Q.push_back(P[i]);
+      for (size_t i = kk - p + 1; i <= kk - rr; ++i) {
+        const double a = (t - U[i]) / (U[i + p] - U[i]);
+        Q.push_back((1 - a) * P[i - 1] + a * P[i]);
+      }
+      for (size_t i = kk - rr; i < P.size(); ++i) Q.push_back(P[i]);
+      P = std::move(Q);
+      U.insert(U.begin() + static_cast<long>(kk) + 1, t);
+    }
+    k += static_cast<size_t>(std::max(r, p));
+  }
+  std::vector<std::vector<std::complex<double>>> pieces;
+  for (size_t i = 0; i + p < P.size(); i += p) pieces.emplace_back(P.begin() + i, P.begin() + i + p + 1);
+  return pieces;
+}
+
+void write_dxf(std::ostream& out, const BSpline& b) {
+  b.validate();
+  auto g = [&out](int code, const std::string& value) { out << code << "\n" << value << "\n"; };
+  g(0, "SECTION");
+  g(2, "HEADER");
+  g(9, "$ACADVER");
+  g(1, "AC1015");
+  g(9, "$INSUNITS");
+  g(70, "0");
+  g(0, "ENDSEC");
+  g(0, "SECTION");
+  g(2, "ENTITIES");
+  g(0, "SPLINE");
+  g(5, "100");
+  g(100, "AcDbEntity");
+  g(8, "0");
+  g(100, "AcDbSpline");
+  g(210, "0.0");
+  g(220, "0.0");
+  g(230, "1.0");
+  g(70, std::to_string(8 + (b.rational() ? 4 : 0)));  // planar (+ rational)
+  g(71, std::to_string(b.degree));
+  g(72, std::to_string(b.knots.size()));
+  g(73, std::to_string(b.control_points.size()));
+  g(74, "0");
+  g(42, "1e-10");
+  g(43, "1e-10");
+  for (double k : b.knots) g(40, num(k));
+  for (size_t i = 0; i < b.control_points.size(); ++i) {
+    if (b.rational()) g(41, num(b.weights[i]));
+    g(10, num(b.control_points[i].real()));
+    g(20, num(b.control_points[i].imag()));
+    g(30, "0.0");
+  }
+  g(0, "ENDSEC");
+  g(0, "EOF");
+}
+
+void write_svg(std::ostream& out, const BSpline& b) {
+  if (b.degree != 3) throw_input_error("write_svg", "degree", b.degree, "3 (SVG paths hold cubic Bézier curves)");
+  const auto pieces = bezier_pieces(b);
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+  for (const auto& c : b.control_points) {
+    x0 = std::min(x0, c.real());
+    x1 = std::max(x1, c.real());
+    y0 = std::min(y0, c.imag());
+    y1 = std::max(y1, c.imag());
+  }
+  const double margin = 0.05 * std::max({x1 - x0, y1 - y0, 1e-300});
+  const double w = x1 - x0 + 2 * margin, h = y1 - y0 + 2 * margin;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"" << num(800 * h / w) << "\" viewBox=\""
+      << num(x0 - margin) << " " << num(-(y1 + margin)) << " " << num(w) << " " << num(h) << "\">\n"
+      << "<!-- lac: an LA curve as cubic Bézier commands in its own coordinates (y up; the group flips it) -->\n"
+      << "<g transform=\"scale(1,-1)\">\n<path fill=\"none\" stroke=\"black\" stroke-width=\"" << num(w / 400)
+      << "\" d=\"M " << num(pieces.front()[0].real()) << " " << num(pieces.front()[0].imag());
+  for (const auto& pc : pieces) {
+    out << "\nC";
+    for (int i = 1; i <= 3; ++i) out << " " << num(pc[i].real()) << " " << num(pc[i].imag());
+  }
+  out << "\"/>\n</g>\n</svg>\n";
+}
+
+void write_file(const std::string& path, ExportFormat format, const BSpline& b) {
+  if (format == ExportFormat::step || format == ExportFormat::iges)
+    throw_input_error("write_file", "export",
+                      "'" + path + "': " + to_string(format) +
+                          " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
+  if (format == ExportFormat::dxf) write_dxf(out, b);
+  else write_svg(out, b);
+  out.flush();
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
+}
+
+}  // namespace lac

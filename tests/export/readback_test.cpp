@@ -1,0 +1,218 @@
+// Every export format read back by an independent reader and compared with the LA curve at
+// ≥ 1000 points: STEP and IGES by OpenCASCADE's readers, DXF by ezdxf (Python), SVG by the path
+// parser below. The B-spline's parameter is the arc length, so the comparison is at equal s.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "lac/constructions/g2_hermite.hpp"
+#include "lac/export/to_bspline.hpp"
+#include "lac/export/write.hpp"
+#ifdef LAC_WITH_OCCT
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_Curve.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+
+#include "lac/export/occt/occt_writer.hpp"
+#endif
+
+namespace lac {
+namespace {
+
+constexpr int kPoints = 1001;
+
+struct Exported {
+  PlanarCurve curve;
+  ExportResult result;
+};
+
+/// Quintic (G2) for STEP, IGES and DXF; cubic for SVG (its paths hold cubic Béziers).
+const Exported& acceptance(int degree);
+const Exported& acceptance() { return acceptance(5); }
+
+// lac g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 --p1 4,0 --theta1 -0.6 --kappa1 -0.3 --alpha -0.5
+const Exported& acceptance(int degree) {
+  static const auto make = [](int d) {
+    Exported x;
+    const G2Result g = solve_g2({{{0, 0}, 0.6, 0.5}, {{4, 0}, -0.6, -0.3}, -0.5});
+    x.curve = g.curve;
+    x.result = to_bspline(x.curve, {.tolerance = 1e-6, .degree = d});
+    return x;
+  };
+  static const Exported cubic = make(3), quintic = make(5);
+  return degree == 3 ? cubic : quintic;
+}
+
+std::string temp_file(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("lac_export_test_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+/// Largest |c(t) − read(t)| over the points.
+template <class Read>
+double compare(const PlanarCurve& c, double t0, double t1, const Read& read) {
+  double worst = 0;
+  for (int i = 0; i < kPoints; ++i) {
+    const double t = t0 + (t1 - t0) * i / (kPoints - 1);
+    worst = std::max(worst, std::abs(position_at(c, std::clamp(t, 0.0, c.length())).point.position - read(t)));
+  }
+  return worst;
+}
+
+#ifdef LAC_WITH_OCCT
+void check_occt_shape(const TopoDS_Shape& shape, const Exported& e) {
+  int edges = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
+    ++edges;
+    double f = 0, l = 0;
+    const Handle(Geom_Curve) g = BRep_Tool::Curve(TopoDS::Edge(ex.Current()), f, l);
+    ASSERT_FALSE(g.IsNull());
+    const Handle(Geom_BSplineCurve) bs = Handle(Geom_BSplineCurve)::DownCast(g);
+    ASSERT_FALSE(bs.IsNull()) << "not a B-spline: " << g->DynamicType()->Name();
+    EXPECT_EQ(bs->Degree(), e.result.curve.degree);
+    EXPECT_EQ(static_cast<size_t>(bs->NbPoles()), e.result.curve.control_points.size());
+    EXPECT_NEAR(f, 0.0, 1e-12);
+    EXPECT_NEAR(l, e.curve.length(), 1e-12);
+    const double d = compare(e.curve, f, l, [&](double t) {
+      const gp_Pnt p = bs->Value(t);
+      EXPECT_EQ(p.Z(), 0.0);
+      return std::complex<double>(p.X(), p.Y());
+    });
+    EXPECT_LE(d, e.result.info.max_deviation);
+    std::printf("read back: deviation %.3g, bound %.3g\n", d, e.result.info.max_deviation);
+  }
+  EXPECT_EQ(edges, 1);
+}
+
+TEST(ExportReadBack, StepByOpenCascade) {
+  const Exported& e = acceptance();
+  ASSERT_TRUE(e.result.usable());
+  const std::string path = temp_file("curve.step");
+  write_step(path, e.result.curve);
+  STEPControl_Reader reader;
+  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
+  ASSERT_GT(reader.TransferRoots(), 0);
+  check_occt_shape(reader.OneShape(), e);
+  std::filesystem::remove(path);
+}
+
+TEST(ExportReadBack, IgesByOpenCascade) {
+  const Exported& e = acceptance();
+  ASSERT_TRUE(e.result.usable());
+  const std::string path = temp_file("curve.iges");
+  write_iges(path, e.result.curve);
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("     126"), std::string::npos) << "no entity 126 in the directory section";
+  IGESControl_Reader reader;
+  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
+  ASSERT_GT(reader.TransferRoots(), 0);
+  check_occt_shape(reader.OneShape(), e);
+  std::filesystem::remove(path);
+}
+#endif
+
+TEST(ExportReadBack, DxfByEzdxf) {
+  const Exported& e = acceptance();
+  ASSERT_TRUE(e.result.usable());
+  const std::string path = temp_file("curve.dxf");
+  write_file(path, ExportFormat::dxf, e.result.curve);
+  const std::string cmd = std::string("/usr/bin/python3 ") + LAC_SOURCE_DIR + "/tests/export/read_dxf.py " + path + " " +
+                          std::to_string(kPoints);
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  ASSERT_EQ(pclose(pipe), 0) << out;
+  std::istringstream in(out);
+  int degree = 0;
+  size_t control_points = 0;
+  in >> degree >> control_points;
+  EXPECT_EQ(degree, 5);
+  EXPECT_EQ(control_points, e.result.curve.control_points.size());
+  double t, x, y, worst = 0;
+  int points = 0;
+  while (in >> t >> x >> y) {
+    worst = std::max(worst, std::abs(position_at(e.curve, std::clamp(t, 0.0, e.curve.length())).point.position -
+                                     std::complex<double>(x, y)));
+    ++points;
+  }
+  EXPECT_EQ(points, kPoints);
+  EXPECT_LE(worst, e.result.info.max_deviation);
+  std::printf("ezdxf: deviation %.3g, bound %.3g\n", worst, e.result.info.max_deviation);
+  std::filesystem::remove(path);
+}
+
+/// The cubic pieces of the one path's d attribute ("M x y C x y x y x y ..." only).
+std::vector<std::array<std::complex<double>, 4>> parse_svg_path(const std::string& svg) {
+  const size_t at = svg.find(" d=\"");
+  EXPECT_NE(at, std::string::npos);
+  std::istringstream in(svg.substr(at + 4, svg.find('"', at + 4) - at - 4));
+  std::string cmd;
+  double x, y;
+  in >> cmd >> x >> y;
+  EXPECT_EQ(cmd, "M");
+  std::complex<double> cur{x, y};
+  std::vector<std::array<std::complex<double>, 4>> pieces;
+  while (in >> cmd) {
+    EXPECT_EQ(cmd, "C");
+    std::array<std::complex<double>, 4> p{cur};
+    for (int i = 1; i <= 3; ++i) {
+      in >> x >> y;
+      p[i] = {x, y};
+    }
+    cur = p[3];
+    pieces.push_back(p);
+  }
+  return pieces;
+}
+
+TEST(ExportReadBack, SvgCubicPath) {
+  const Exported& e = acceptance(3);
+  ASSERT_TRUE(e.result.usable());
+  std::ostringstream out;
+  write_svg(out, e.result.curve);
+  const auto pieces = parse_svg_path(out.str());
+  std::vector<double> knots;
+  std::vector<int> mult;
+  e.result.curve.distinct_knots(knots, mult);
+  ASSERT_EQ(pieces.size() + 1, knots.size());  // one C command per span
+  double worst = 0;
+  int points = 0;
+  for (size_t j = 0; j < pieces.size(); ++j) {
+    const int n = 1 + kPoints / static_cast<int>(pieces.size());
+    for (int i = 0; i <= n; ++i) {
+      const double u = static_cast<double>(i) / n, v = 1 - u;
+      const auto& p = pieces[j];
+      const std::complex<double> b = v * v * v * p[0] + 3 * v * v * u * p[1] + 3 * v * u * u * p[2] + u * u * u * p[3];
+      const double s = knots[j] + (knots[j + 1] - knots[j]) * u;
+      worst = std::max(worst, std::abs(position_at(e.curve, std::min(s, e.curve.length())).point.position - b));
+      ++points;
+    }
+  }
+  EXPECT_GE(points, kPoints);
+  EXPECT_LE(worst, e.result.info.max_deviation);
+}
+
+TEST(ExportReadBack, FormatFromExtension) {
+  EXPECT_EQ(export_format_from_path("a/b.STEP"), ExportFormat::step);
+  EXPECT_EQ(export_format_from_path("b.stp"), ExportFormat::step);
+  EXPECT_EQ(export_format_from_path("b.igs"), ExportFormat::iges);
+  EXPECT_EQ(export_format_from_path("b.Iges"), ExportFormat::iges);
+  EXPECT_EQ(export_format_from_path("b.dxf"), ExportFormat::dxf);
+  EXPECT_EQ(export_format_from_path("b.svg"), ExportFormat::svg);
+  EXPECT_THROW(export_format_from_path("b.stl"), InputError);
+  EXPECT_THROW(export_format_from_path("dir.step/b"), InputError);
+}
+
+}  // namespace
+}  // namespace lac
