@@ -32,6 +32,7 @@ from ._lac import (  # noqa: F401
     erfcx,
     erfi,
     erfi_inv,
+    export_curve,
     g1_hermite,
     g2_hermite,
     gamma_inc,
@@ -47,6 +48,7 @@ from ._lac import (  # noqa: F401
     scurve,
     space,
     split,
+    to_bspline,
     translate,
     trim,
 )

@@ -101,6 +101,7 @@ void bind_constructions(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_special(py::module_& m);
 void bind_geometry(py::module_& m);  // geometry.cpp
+void bind_export(py::module_& m);    // export.cpp
 
 // ---- template definitions ----
 

@@ -253,4 +253,5 @@ PYBIND11_MODULE(_lac, m) {
   bind_batch(m);
   bind_special(m);
   bind_geometry(m);
+  bind_export(m);
 }

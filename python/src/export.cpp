@@ -1,0 +1,105 @@
+// CAD export (export/, docs/export.md) for lac.Curve: the certified B-spline of a planar curve and
+// its files (.dxf, .svg; .step and .iges when the module is built with OpenCASCADE).
+#include <pybind11/numpy.h>
+
+#include "bindings.hpp"
+#include "lac/export/to_bspline.hpp"
+#include "lac/export/write.hpp"
+#ifdef LAC_WITH_OCCT
+#include "lac/export/occt/occt_writer.hpp"
+#endif
+
+namespace lacpy {
+
+namespace {
+
+lac::ExportOptions export_options(double tolerance, int degree, long max_spans) {
+  if (degree != 3 && degree != 5) lac::throw_input_error("to_bspline", "degree", degree, "3 or 5");
+  lac::ExportOptions o;
+  o.tolerance = tolerance;
+  o.degree = degree;
+  o.max_spans = max_spans;
+  return o;
+}
+
+py::dict bspline_dict(const lac::ExportResult& r) {
+  py::dict d;
+  d["status"] = status_text(r.summary.status);
+  d["message"] = r.summary.message;
+  d["usable"] = r.usable();
+  const lac::BSpline& b = r.curve;
+  d["degree"] = b.degree;
+  py::array_t<double> knots(static_cast<py::ssize_t>(b.knots.size()));
+  std::copy(b.knots.begin(), b.knots.end(), knots.mutable_data());
+  d["knots"] = knots;
+  py::array_t<double> points({static_cast<py::ssize_t>(b.control_points.size()), py::ssize_t{2}});
+  auto p = points.mutable_unchecked<2>();
+  for (size_t i = 0; i < b.control_points.size(); ++i) {
+    p(static_cast<py::ssize_t>(i), 0) = b.control_points[i].real();
+    p(static_cast<py::ssize_t>(i), 1) = b.control_points[i].imag();
+  }
+  d["control_points"] = points;
+  d["weights"] = py::none();
+  const lac::ExportInfo& in = r.info;
+  d["tolerance"] = in.tolerance;
+  d["max_deviation"] = in.max_deviation;
+  d["spans"] = in.spans;
+  d["curvature_monotone"] = in.curvature_monotone;
+  d["continuity"] = in.continuity;
+  return d;
+}
+
+}  // namespace
+
+void bind_export(py::module_& m) {
+  m.def(
+      "to_bspline",
+      [](const Curve& c, double tolerance, int degree, long max_spans) {
+        lac::ExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::to_bspline(c.curve, export_options(tolerance, degree, max_spans));
+        }
+        return bspline_dict(r);
+      },
+      py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
+      "The curve as a B-spline with a certified bound on its deviation (docs/export.md): a dict with status, "
+      "usable, degree, knots, control_points (n x 2), weights (None: polynomial), tolerance (absolute; 0 asks "
+      "for 1e-6 x length), max_deviation (the certified bound), spans, curvature_monotone, continuity. "
+      "degree 5 (default): G2 quintic spans; 3: G1 cubic ones. A bound above the tolerance: status inaccurate.");
+  m.def(
+      "export_curve",
+      [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree) {
+        const lac::ExportFormat format = lac::export_format_from_path(path, "path");
+#ifndef LAC_WITH_OCCT
+        if (format == lac::ExportFormat::step || format == lac::ExportFormat::iges)
+          lac::throw_input_error("export_curve", "path", std::string(lac::to_string(format)) +
+                                                             " needs OpenCASCADE, and this module was built without it; .dxf and .svg need none");
+#endif
+        const int deg = degree.value_or(format == lac::ExportFormat::svg ? 3 : 5);
+        if (format == lac::ExportFormat::svg && deg != 3)
+          lac::throw_input_error("export_curve", "degree", deg, "3 for .svg (SVG paths hold cubic Bezier curves)");
+        lac::ExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::to_bspline(c.curve, export_options(tolerance, deg, 1'000'000));
+          if (r.usable()) {
+#ifdef LAC_WITH_OCCT
+            lac::write_any(path, format, r.curve);
+#else
+            lac::write_file(path, format, r.curve);
+#endif
+          }
+        }
+        py::dict d = bspline_dict(r);
+        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
+        d["format"] = lac::to_string(format);
+        return d;
+      },
+      py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      "Writes the certified B-spline of the curve to `path`, the format from its extension (.step/.stp, "
+      ".iges/.igs, .dxf, .svg); returns to_bspline's dict plus file (None when the bound exceeds the "
+      "tolerance: nothing is written) and format.");
+}
+
+}  // namespace lacpy

@@ -1,0 +1,82 @@
+"""The export bindings (lac.to_bspline, lac.export_curve): the B-spline evaluated by de Boor's
+algorithm here stays within its certified bound of the curve; files are written in every format
+the module has, and DXF is read back by ezdxf."""
+import numpy as np
+import pytest
+
+import lac
+
+
+@pytest.fixture(scope="module")
+def curve():
+    """The acceptance curve of docs/export.md (a G2 triple at alpha = -0.5)."""
+    r = lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, alpha=-0.5)
+    assert r.usable, r.message
+    return r.curve
+
+
+def de_boor(knots, points, p, t):
+    k = np.searchsorted(knots, t, side="right") - 1
+    k = min(max(k, p), len(points) - 1)
+    d = [points[j + k - p].copy() for j in range(p + 1)]
+    for r in range(1, p + 1):
+        for j in range(p, r - 1, -1):
+            a = (t - knots[j + k - p]) / (knots[j + 1 + k - r] - knots[j + k - p])
+            d[j] = (1 - a) * d[j - 1] + a * d[j]
+    return d[p]
+
+
+@pytest.mark.parametrize("degree", [3, 5])
+def test_bspline_within_its_certified_bound(curve, degree):
+    b = lac.to_bspline(curve, tolerance=1e-6, degree=degree)
+    assert b["usable"] and b["status"] == "ok", b["message"]
+    assert b["degree"] == degree
+    assert 0 < b["max_deviation"] <= 1e-6
+    knots, cp = b["knots"], b["control_points"]
+    assert cp.shape[1] == 2 and len(knots) == len(cp) + degree + 1
+    # The parameter is the arc length: compare at equal s.
+    s = np.linspace(0, curve.length, 1001)
+    pts = curve.eval(s, integrator="gauss-kronrod")
+    got = np.array([de_boor(knots, cp, degree, t) for t in s])
+    dist = np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y)
+    assert dist.max() <= b["max_deviation"]
+
+
+def test_tolerance_beyond_reach_is_inaccurate(curve):
+    b = lac.to_bspline(curve, tolerance=1e-15, max_spans=10)
+    assert not b["usable"]
+
+
+def test_export_dxf_reads_back(curve, tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    path = tmp_path / "curve.dxf"
+    r = lac.export_curve(curve, str(path), tolerance=1e-6)
+    assert r["file"] == str(path) and r["format"] == "dxf", r["message"]
+    doc = ezdxf.readfile(str(path))
+    splines = list(doc.modelspace().query("SPLINE"))
+    assert len(splines) == 1
+    assert len(list(splines[0].control_points)) == len(r["control_points"])
+
+
+def test_export_svg_is_cubic_and_bad_input_names_the_parameter(curve, tmp_path):
+    r = lac.export_curve(curve, str(tmp_path / "curve.svg"))
+    assert r["degree"] == 3 and r["file"]
+    assert "<path" in (tmp_path / "curve.svg").read_text()
+    with pytest.raises(ValueError, match="degree"):
+        lac.export_curve(curve, str(tmp_path / "curve.svg"), degree=5)
+    with pytest.raises(ValueError, match="path"):
+        lac.export_curve(curve, str(tmp_path / "curve.obj"))
+    with pytest.raises(ValueError, match="degree"):
+        lac.to_bspline(curve, degree=4)
+
+
+def test_step_and_iges_are_written_when_built_with_opencascade(curve, tmp_path):
+    for name in ("curve.step", "curve.igs"):
+        path = tmp_path / name
+        try:
+            r = lac.export_curve(curve, str(path), tolerance=1e-6)
+        except ValueError as e:  # a module built without OpenCASCADE says so, naming the path
+            assert "OpenCASCADE" in str(e) and "path" in str(e)
+            continue
+        assert r["file"] == str(path) and path.stat().st_size > 0
+    assert "B_SPLINE_CURVE_WITH_KNOTS" in (tmp_path / "curve.step").read_text() or not (tmp_path / "curve.step").exists()
