@@ -160,6 +160,25 @@ double tangent_rounding(const LaLaw& law, const LinearQ& seg) {
   return DBL_EPSILON * (1.0 + phi_max) * (seg.ub - seg.ua);
 }
 
+void place_tangent_integral(const LaSegment& seg, const IntegralResult<std::complex<double>>& I, PositionResult& r) {
+  r.evaluations = I.evaluations;
+  r.status = I.status;
+  r.message = I.message;
+  if (usable(I.status)) {
+    r.point.position = seg.start() + (seg.scale() * seg.rotation()) * I.value;
+    r.error_estimate = seg.scale() * I.error_estimate;
+    if (!(std::isfinite(r.point.position.real()) && std::isfinite(r.point.position.imag()) &&
+          std::isfinite(r.error_estimate))) {
+      r.status = Status::numerical_failure;
+      r.message = "non-finite position or error estimate";
+    }
+  }
+  if (!usable(r.status)) {
+    r.point.position = seg.start();
+    r.error_estimate = std::numeric_limits<double>::infinity();
+  }
+}
+
 IntegralResult<std::complex<double>> integrate_tangent_gl(const LaLaw& law, const LinearQ& seg, const GaussLegendre& m) {
   IntegralResult<std::complex<double>> r;
   // The segment kernel (la_segment_kernel.hpp): Gauss–Legendre panels sized by the phase and

@@ -116,22 +116,7 @@ PositionResult position_at(const LaSegment& seg, double s, const Igf& method) {
   r.point.position = seg.start();
   const double u = seg.u_at(s);
   if (u == seg.ua()) return r;
-  const IntegralResult<std::complex<double>> I = detail::integrate_tangent_igf(seg.law(), seg.part(seg.ua(), u), method);
-  r.evaluations = I.evaluations;
-  r.status = I.status;
-  r.message = I.message;
-  if (usable(I.status)) {
-    r.point.position = seg.start() + (seg.scale() * seg.rotation()) * I.value;
-    r.error_estimate = seg.scale() * I.error_estimate;
-    if (!(std::isfinite(r.point.position.real()) && std::isfinite(r.point.position.imag()) && std::isfinite(r.error_estimate))) {
-      r.status = Status::numerical_failure;
-      r.message = "non-finite position or error estimate";
-    }
-  }
-  if (!usable(r.status)) {
-    r.point.position = seg.start();
-    r.error_estimate = std::numeric_limits<double>::infinity();
-  }
+  detail::place_tangent_integral(seg, detail::integrate_tangent_igf(seg.law(), seg.part(seg.ua(), u), method), r);
   return r;
 }
 

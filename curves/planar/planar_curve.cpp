@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "lac/common/error.hpp"
-#include "lac/curves/planar/la_segment_igf.hpp"
 
 namespace lac {
 
@@ -122,16 +121,6 @@ std::vector<double> PlanarCurve::extreme_candidates(size_t k) const {
   // Ascending; duplicates (a candidate at a piece end) cost an empty integral only.
   std::sort(out.begin(), out.end());
   return out;
-}
-
-PositionResult position_at(const PlanarCurve& curve, double s, const Igf& method) {
-  curve.check_s(s, "s");
-  const size_t k = curve.segment_at(s);
-  PositionResult r = position_at(curve.segments()[k], curve.local_s(k, s), method);
-  const std::complex<double> position = r.point.position;
-  r.point = curve.frame_at(s);
-  r.point.position = position;
-  return r;
 }
 
 std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const Igf& method) {

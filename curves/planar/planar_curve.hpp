@@ -16,7 +16,7 @@
 
 #include "lac/curves/curve.hpp"
 #include "lac/curves/planar/la_segment.hpp"
-#include "lac/integrators/igf.hpp"
+#include "lac/curves/planar/la_segment_igf.hpp"
 
 namespace lac {
 
@@ -95,8 +95,10 @@ class PlanarCurve {
   double length_ = 0;
 };
 
-/// Position and frame at s ∈ [0, length()], integrated from the start of the segment holding s.
-template <QuadratureMethod M = GaussLegendre>
+/// Position and frame at s ∈ [0, length()], integrated from the start of the segment holding s
+/// (any quadrature method, or igf: la_segment_igf.hpp).
+template <class M = GaussLegendre>
+  requires QuadratureMethod<M> || std::same_as<M, Igf>
 PositionResult position_at(const PlanarCurve& curve, double s, const M& method = M{});
 
 /// n ≥ 2 points uniform in s from s0 to s1 (both in [0, length()]). Each position is integrated
@@ -108,7 +110,6 @@ std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double
 
 /// The same by igf (integrators/igf.hpp: the closed form of each segment's standard-form pieces,
 /// la_segment_igf.hpp), each point from the start of its segment; `evaluations` cumulative.
-PositionResult position_at(const PlanarCurve& curve, double s, const Igf& method);
 std::vector<PositionResult> polyline(const PlanarCurve& curve, double s0, double s1, int n, const Igf& method);
 
 }  // namespace lac

@@ -76,6 +76,11 @@ IntegralResult<std::complex<double>> integrate_tangent_with(const LaLaw& law, co
   return r;
 }
 
+/// The position of the tangent integral I from the segment's start (start + ℓR·I) into r, with its
+/// estimate, evaluations and status; a non-finite result is numerical_failure, and a failed one
+/// leaves the start point with an infinite estimate (PositionResult).
+void place_tangent_integral(const LaSegment& seg, const IntegralResult<std::complex<double>>& I, PositionResult& r);
+
 }  // namespace detail
 
 template <QuadratureMethod M>
@@ -108,23 +113,7 @@ PositionResult position_at(const LaSegment& seg, double s, const M& method) {
   PositionResult r;
   r.form = Form::s;
   r.point = seg.frame_at(s);
-  const IntegralResult<std::complex<double>> I = integrate_tangent(seg, seg.ua(), seg.u_at(s), method);
-  r.evaluations = I.evaluations;
-  r.status = I.status;
-  r.message = I.message;
-  if (usable(I.status)) {
-    r.point.position = seg.start() + (seg.scale() * seg.rotation()) * I.value;
-    r.error_estimate = seg.scale() * I.error_estimate;
-    if (!(std::isfinite(r.point.position.real()) && std::isfinite(r.point.position.imag()) &&
-          std::isfinite(r.error_estimate))) {
-      r.status = Status::numerical_failure;
-      r.message = "non-finite position or error estimate";
-    }
-  }
-  if (!usable(r.status)) {
-    r.point.position = seg.start();
-    r.error_estimate = std::numeric_limits<double>::infinity();
-  }
+  detail::place_tangent_integral(seg, integrate_tangent(seg, seg.ua(), seg.u_at(s), method), r);
   return r;
 }
 

@@ -14,7 +14,8 @@
 
 namespace lac {
 
-template <QuadratureMethod M>
+template <class M>
+  requires QuadratureMethod<M> || std::same_as<M, Igf>
 PositionResult position_at(const PlanarCurve& curve, double s, const M& method) {
   curve.check_s(s, "s");
   const size_t k = curve.segment_at(s);
