@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/la_segment_angles.hpp"
 
 namespace lac {
 
@@ -78,48 +79,11 @@ void PlanarCurve::check_s(double s, const char* name) const {
 
 std::vector<double> PlanarCurve::extreme_candidates(size_t k) const {
   const LaSegment& seg = segments_.at(k);
-  const LaLaw& law = seg.law();
-  const detail::LinearQ& q = seg.normalized();
-  std::vector<double> out{seg.ua()};
-  // Pieces on which φ is monotonic: split where κ = 0.
-  std::vector<double> cuts{seg.ua()};
-  if (const auto u = seg.inflection_u(); u && *u > seg.ua() && *u < seg.ub()) cuts.push_back(*u);
-  cuts.push_back(seg.ub());
-  const double c0 = q.slope(), Fa = law.F(q.qa);
-  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-    const double u_lo = cuts[i], u_hi = cuts[i + 1];
-    const double phi_lo = seg.phi_at(u_lo), phi_hi = seg.phi_at(u_hi);
-    const double sign = law.t_of_q(seg.q_at(0.5 * (u_lo + u_hi))) < 0 ? -1.0 : 1.0;
-    // θ = angle + φ ≡ 0 (mod π/2): φ_j = jπ/2 − angle strictly between the piece's end angles.
-    const double quarter = 0.5 * std::numbers::pi, angle = seg.rotation_angle();
-    const double a = std::min(phi_lo, phi_hi) + angle, b = std::max(phi_lo, phi_hi) + angle;
-    const double j0 = std::floor(a / quarter) + 1, j1 = std::ceil(b / quarter) - 1;
-    if (!(j1 - j0 < static_cast<double>(kMaxCandidates)))
-      throw_input_error("PlanarCurve::extreme_candidates", "segment", static_cast<double>(k),
-                        "segments turning less than " + format_number(kMaxCandidates * quarter) + " rad");
-    std::vector<double> found;
-    for (double j = j0; j <= j1; ++j) {
-      const double target = j * quarter - angle;
-      // φ(u) − φa = (F(q(u)) − F(qa))/c0 (any α, through q = 0 too): u from F⁻¹ on this side of
-      // 0, then Newton on φ(u) = target (φ' = K(q)) for the rounding.
-      double u = c0 == 0 ? q.ua + (target - q.phi_a) / law.kappa_of_q(q.qa)
-                         : q.ua + (law.F_inverse(Fa + c0 * (target - q.phi_a), sign) - q.qa) / c0;
-      if (!(u >= u_lo && u <= u_hi)) u = u_lo + (u_hi - u_lo) * (target - phi_lo) / (phi_hi - phi_lo);
-      for (int it = 0; it < 3; ++it) {
-        const double slope = seg.curvature_per_u(u);
-        if (!(slope != 0)) break;
-        const double next = std::clamp(u - (seg.phi_at(u) - target) / slope, u_lo, u_hi);
-        if (!std::isfinite(next)) break;
-        u = next;
-      }
-      found.push_back(std::clamp(u, u_lo, u_hi));
-    }
-    std::sort(found.begin(), found.end());
-    out.insert(out.end(), found.begin(), found.end());
-    out.push_back(u_hi);
-  }
-  // Ascending; duplicates (a candidate at a piece end) cost an empty integral only.
-  std::sort(out.begin(), out.end());
+  bool capped = false;
+  std::vector<double> out = detail::angle_cuts(seg, 0.0, 0.5 * std::numbers::pi, kMaxCandidates, &capped);
+  if (capped)
+    throw_input_error("PlanarCurve::extreme_candidates", "segment", static_cast<double>(k),
+                      "segments turning less than " + format_number(kMaxCandidates * 0.5 * std::numbers::pi) + " rad");
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lac/common/status.hpp"
+#include "lac/curves/planar/la_segment_angles.hpp"
 #include "lac/curves/planar/planar_curve.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
 
@@ -96,10 +97,5 @@ double point_segment_distance(std::complex<double> z, std::complex<double> a, st
 /// Distance between the segments [a0, a1] and [b0, b1] (0 when they cross).
 double segment_segment_distance(std::complex<double> a0, std::complex<double> a1, std::complex<double> b0,
                                 std::complex<double> b1);
-/// The u values in [u_lo, u_hi] of segment `seg` where θ ≡ beta (mod period), ascending, with
-/// the ends and the inflection: between two consecutive values sin(2π(θ − beta)/(2 period)) keeps
-/// its sign (φ is monotonic between inflections and F is invertible there, as in
-/// PlanarCurve::extreme_candidates). Empty (with *capped set) beyond `cap` values.
-std::vector<double> angle_cuts(const LaSegment& seg, double beta, double period, size_t cap, bool* capped);
 
 }  // namespace lac::detail
