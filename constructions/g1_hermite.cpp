@@ -316,7 +316,8 @@ ShapeLimits shape_limits(Normalized& nz) {
   if (nz.alpha == 0) return {b, a, 0, 1};  // b → −∞: turning at the start
   if (nz.alpha <= 1) return {a, b, 1, 0};  // x → −∞: κ = ∞ at the end
   const double p = 1 - 1 / nz.alpha;
-  const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
+  // Past the kernel's panel cap the limits stay NaN: the intervals next to them are never excluded.
+  const Complex J = power_limit_integral(nz.delta, p, nz.evaluations).value_or(Complex(kNaN, kNaN));
   return {b * std::conj(J), a * J, 1 / (p + 1), p / (p + 1)};
 }
 
@@ -449,7 +450,7 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
       // end-point direction is monotonic in x (docs/g1_hermite.md), so f must change sign
       // between the two limits.
       const double p = 1 - 1 / pr.alpha;
-      const Complex J = power_limit_integral(nz.delta, p, nz.evaluations);
+      const Complex J = *power_limit_integral(nz.delta, p, nz.evaluations);  // |Δ| ≤ π: inside the cap
       const double f_start = (std::polar(1.0, nz.phi0) * J).imag();
       const double f_end = (std::polar(1.0, nz.phi0 + nz.delta) * std::conj(J)).imag();
       f_at_xmax = f_start;

@@ -140,8 +140,11 @@ void add(Integral& acc, Dual weight, Dual phi) {
   acc.I += weight.v * e;
   acc.dI += Complex(weight.d, weight.v * phi.d) * e;
 }
+// 20-node panels for a piece turning `turning` rad; −1 past kMaxPanels (or not finite): the piece is
+// not resolved (checked in double: the count can exceed int).
 int panels_for(double turning) {
-  return std::clamp(static_cast<int>(std::ceil(std::abs(turning) / kPanelTurn)), 1, kMaxPanels);
+  const double panels = std::ceil(std::abs(turning) / kPanelTurn);
+  return panels <= kMaxPanels ? std::max(1, static_cast<int>(panels)) : -1;
 }
 // node(t, w) over `panels` equal N-node Gauss–Legendre panels of [t0, t1]; returns the node count.
 template <int N, class Node>
@@ -276,8 +279,8 @@ struct Kernel {
   bool exponential(double b, Integral& r, Trial& t) {
     if (std::abs(b) >= 1e-3) {
       if (!exponential_far(b, r)) return false;
-    } else {
-      exponential_near(b, r);
+    } else if (!exponential_near(b, r)) {
+      return false;
     }
     // |κ| per u at u = 0: |Δ| b / expm1(b), logarithm without overflow.
     const double lr = b == 0 ? 0.0
@@ -341,7 +344,9 @@ struct Kernel {
 
   // |b| < 1e-3 (near the arc): E = expm1(bu)/expm1(b) (b ≤ 0), mirrored for b > 0 (E = 1 − E(1 − u; −b)),
   // a series in b below 1e-6; 20 nodes per 6 rad of turning.
-  void exponential_near(double b, Integral& r) {
+  bool exponential_near(double b, Integral& r) {
+    const int panels = panels_for(delta);
+    if (panels < 0) return false;
     const bool series = std::abs(b) < 1e-6, mirror = b > 0;
     const double beta = mirror ? -b : b, dbeta = mirror ? -1.0 : 1.0, em = std::expm1(beta);
     const Dual den{em, (em + 1) * dbeta};
@@ -354,8 +359,9 @@ struct Kernel {
       const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
       return mirror ? 1.0 + (-e) : e;
     };
-    evaluations += gauss_panels<kN>(0.0, 1.0, panels_for(delta),
+    evaluations += gauss_panels<kN>(0.0, 1.0, panels,
                                     [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+    return true;
   }
 
   // 0 < |α| < kSmallAlpha, q of one sign on [0, 1], X = log(qb/qa): κ/κa = (1 + u·expm1(X))^(−1/α),
@@ -394,6 +400,7 @@ struct Kernel {
     for (int i = 0; i + 1 < n; ++i) {
       const double e_next = i + 2 == n ? 1.0 : E(cuts[i + 1]).v;
       const int panels = panels_for(delta * (e_next - e_prev));
+      if (panels < 0) return false;
       e_prev = e_next;
       evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], panels,
                                       [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
@@ -656,7 +663,7 @@ std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail
 
 
 // v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
-std::complex<double> power_limit_integral(double delta, double p, long& evaluations) {
+std::optional<std::complex<double>> power_limit_integral(double delta, double p, long& evaluations) {
   if (p < 0.25 && std::abs(delta) <= 4) {
     // Near α = 1 v = t^k needs k ~ 4/p: Σ (iΔ)^n/(n!(1 + np)) instead (|Δ| ≤ 4: ≤ 40 terms, the
     // largest 4⁴/4! ≈ 11), continuous in p; each term counts as one evaluation.
@@ -671,6 +678,7 @@ std::complex<double> power_limit_integral(double delta, double p, long& evaluati
   }
   const double k = std::max(4.0, std::ceil(4 / p));
   const int panels = panels_for(delta);
+  if (panels < 0) return std::nullopt;
   const std::vector<double>& jac = gauss_legendre_20_node_powers(k - 1, panels);
   const std::vector<double>& phase = gauss_legendre_20_node_powers(k * p, panels);
   Complex sum;

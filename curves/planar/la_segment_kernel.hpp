@@ -74,6 +74,7 @@ std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail
 
 /// ∫₀¹ e^{iΔv^p} dv for 0 < p < 1: the limit shape of α > 1 as the shape variable goes to ±∞
 /// (docs/g1_hermite.md "Proofs of no solution"); adds its kernel evaluations to `evaluations`.
-std::complex<double> power_limit_integral(double delta, double p, long& evaluations);
+/// nullopt where |Δ| is past the kernel's panel cap (not evaluated).
+std::optional<std::complex<double>> power_limit_integral(double delta, double p, long& evaluations);
 
 }  // namespace lac

@@ -100,3 +100,26 @@ TEST(LaSegmentKernel, SegmentIntegralIsWithinItsBoundOfTheLongDoubleOracle) {
 }
 
 }  // namespace
+
+// A piece turning more than the kernel's panel cap (256 panels of 6 rad) is "not evaluated" at
+// once, in every path that counts panels (small α, the near-arc exponential, the α > 1 limit),
+// never a clamped and unresolved sum (docs/robustness.md R27: the count once overflowed int).
+TEST(LaSegmentKernel, TurningPastThePanelCapIsNotEvaluated) {
+  for (const double delta : {1e6, 8.5e10, 1e300}) {
+    for (const auto& [alpha, x] : {std::pair{-3.0517578125e-05, 0.5}, std::pair{3e-5, 0.5}, std::pair{0.0, 1e-4}}) {
+      LaSegmentKernel k{alpha, 0.3, delta};
+      const LaKernelValue v = k.evaluate(x);
+      EXPECT_FALSE(v.ok) << "alpha " << alpha << " delta " << delta;
+      EXPECT_LT(k.evaluations, 100) << "alpha " << alpha << " delta " << delta;
+    }
+    long evaluations = 0;
+    EXPECT_FALSE(power_limit_integral(delta, 0.5, evaluations).has_value()) << delta;
+  }
+  // Inside the cap the same paths evaluate.
+  for (const auto& [alpha, x] : {std::pair{-3.0517578125e-05, 0.5}, std::pair{3e-5, 0.5}, std::pair{0.0, 1e-4}}) {
+    LaSegmentKernel k{alpha, 0.3, 1000.0};
+    EXPECT_TRUE(k.evaluate(x).ok) << alpha;
+  }
+  long evaluations = 0;
+  EXPECT_TRUE(power_limit_integral(1000.0, 0.5, evaluations).has_value());
+}

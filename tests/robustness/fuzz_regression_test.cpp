@@ -330,3 +330,24 @@ TEST(FuzzRegression, G1PieceBeyondThePanelCapIsNotEvaluated) {
     EXPECT_FALSE(r.summary.message.empty()) << what;
   }
 }
+
+// R27: a closed G2 chain at α = −3.05e-5 through points from 5e-324 to 8 apart asked the
+// small-α kernel for 8.5e9 panels of one piece (the panel count of the near-zero, near-arc and
+// α > 1 limit paths overflowed int): such a piece is now "not evaluated" too.
+TEST(FuzzRegression, G2ChainPieceBeyondThePanelCapIsNotEvaluated) {
+  lac::ChainProblem p;
+  p.points = {{7.999755859375, 7.999755859375},        {7.984130859375, 2.058271199775e-312},
+              {-1.9091796875, -0.86083984375},         {-0.08541107177734375, -0.736328125},
+              {-0.0, -5e-324},                         {-1.9091796875, -0.812744140625}};
+  p.alpha = -3.0517578125e-05;
+  p.continuity = lac::ChainContinuity::g2;
+  p.closed = true;
+  const lac::ChainResult r = lac::solve_chain(p);
+  const std::string what = std::string(lac::to_string(r.summary.status)) + " " + r.summary.message;
+  if (r.usable()) {
+    ASSERT_EQ(r.curve.segments().size(), 6u) << what;
+    EXPECT_TRUE(std::isfinite(r.curve.length())) << what;
+  } else {
+    EXPECT_FALSE(r.summary.message.empty()) << what;
+  }
+}
