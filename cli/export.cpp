@@ -2,11 +2,7 @@
 
 #include "cli/batch.hpp"
 #include "lac/common/error.hpp"
-#include "lac/export/to_bspline.hpp"
-#include "lac/export/write.hpp"
-#ifdef LAC_WITH_OCCT
-#include "lac/export/occt/occt_writer.hpp"
-#endif
+#include "lac/export/export_curve.hpp"
 
 namespace lac::cli {
 
@@ -36,38 +32,21 @@ auto as_export_error(F&& f) {
 
 void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common) {
   if (common.export_path.empty()) return;
-  const ExportFormat format = as_export_error([&] { return export_format_from_path(common.export_path); });
-#ifndef LAC_WITH_OCCT
-  if (format == ExportFormat::step || format == ExportFormat::iges)
-    throw_input_error("lac", "export", "'" + common.export_path + "': " + to_string(format) +
-                                           " needs OpenCASCADE, and this lac was built without it (LAC_WITH_OCCT=OFF); "
-                                           ".dxf and .svg need none");
-#endif
   if (common.export_tol && !(*common.export_tol > 0 && std::isfinite(*common.export_tol)))
     throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
-  if (common.export_degree && *common.export_degree != 3 && *common.export_degree != 5)
-    throw_input_error("lac", "export-degree", *common.export_degree, "3 or 5");
-  if (format == ExportFormat::svg && common.export_degree.value_or(3) != 3)
-    throw_input_error("lac", "export-degree", *common.export_degree, "3 for .svg (SVG paths hold cubic Bezier curves)");
+  const PreparedExport prepared = prepare_export({.path = common.export_path,
+                                                  .tolerance = common.export_tol.value_or(0.0),
+                                                  .degree = common.export_degree},
+                                                 {"lac", "export", "export-tol", "export-degree"});
   if (curve == nullptr) {
     report["export"] = nullptr;
     return;
   }
   const std::string path = row_path(common.export_path, current_batch_row());
-  ExportOptions o;
-  if (common.export_tol) o.tolerance = *common.export_tol;
-  o.degree = common.export_degree.value_or(format == ExportFormat::svg ? 3 : 5);
-  const ExportResult r = to_bspline(*curve, o);
+  const ExportResult r = as_export_error([&] { return export_curve(*curve, path, prepared); });
   record_status(r.summary.status);
-  if (r.usable()) {
-#ifdef LAC_WITH_OCCT
-    as_export_error([&] { write_any(path, format, r.curve); });
-#else
-    as_export_error([&] { write_file(path, format, r.curve); });
-#endif
-  }
   report["export"] = {{"file", r.usable() ? Json(path) : Json(nullptr)},
-                      {"format", to_string(format)},
+                      {"format", to_string(prepared.format)},
                       {"degree", r.usable() ? Json(r.curve.degree) : Json(nullptr)},
                       {"control_points", r.usable() ? Json(r.curve.control_points.size()) : Json(nullptr)},
                       {"max_deviation", number(r.info.max_deviation)},

@@ -19,7 +19,7 @@ std::string num(double v) {
 
 }  // namespace
 
-ExportFormat export_format_from_path(const std::string& path, const char* parameter) {
+ExportFormat export_format_from_path(const std::string& path, const char* parameter, const char* function) {
   const size_t dot = path.find_last_of('.');
   const size_t slash = path.find_last_of('/');
   std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : path.substr(dot + 1);
@@ -28,7 +28,7 @@ ExportFormat export_format_from_path(const std::string& path, const char* parame
   if (ext == "iges" || ext == "igs") return ExportFormat::iges;
   if (ext == "dxf") return ExportFormat::dxf;
   if (ext == "svg") return ExportFormat::svg;
-  throw_input_error("export_format_from_path", parameter,
+  throw_input_error(function, parameter,
                     "'" + path + "': the extension names no export format (.step, .stp, .iges, .igs, .dxf, .svg)");
 }
 

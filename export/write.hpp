@@ -17,8 +17,9 @@ namespace lac {
 enum class ExportFormat { step, iges, dxf, svg };
 
 /// The format from a file name's extension (.step/.stp, .iges/.igs, .dxf, .svg; any case).
-/// InputError naming `parameter` for another extension.
-ExportFormat export_format_from_path(const std::string& path, const char* parameter = "export");
+/// InputError naming `function` and `parameter` for another extension.
+ExportFormat export_format_from_path(const std::string& path, const char* parameter = "export",
+                                     const char* function = "export_format_from_path");
 constexpr const char* to_string(ExportFormat f) {
   switch (f) {
     case ExportFormat::step: return "step";

@@ -3,24 +3,11 @@
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
-#include "lac/export/to_bspline.hpp"
-#include "lac/export/write.hpp"
-#ifdef LAC_WITH_OCCT
-#include "lac/export/occt/occt_writer.hpp"
-#endif
+#include "lac/export/export_curve.hpp"
 
 namespace lacpy {
 
 namespace {
-
-lac::ExportOptions export_options(double tolerance, int degree, long max_spans) {
-  if (degree != 3 && degree != 5) lac::throw_input_error("to_bspline", "degree", degree, "3 or 5");
-  lac::ExportOptions o;
-  o.tolerance = tolerance;
-  o.degree = degree;
-  o.max_spans = max_spans;
-  return o;
-}
 
 py::dict bspline_dict(const lac::ExportResult& r) {
   py::dict d;
@@ -58,7 +45,7 @@ void bind_export(py::module_& m) {
         lac::ExportResult r;
         {
           py::gil_scoped_release release;
-          r = lac::to_bspline(c.curve, export_options(tolerance, degree, max_spans));
+          r = lac::to_bspline(c.curve, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
         }
         return bspline_dict(r);
       },
@@ -70,30 +57,16 @@ void bind_export(py::module_& m) {
   m.def(
       "export_curve",
       [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree) {
-        const lac::ExportFormat format = lac::export_format_from_path(path, "path");
-#ifndef LAC_WITH_OCCT
-        if (format == lac::ExportFormat::step || format == lac::ExportFormat::iges)
-          lac::throw_input_error("export_curve", "path", std::string(lac::to_string(format)) +
-                                                             " needs OpenCASCADE, and this module was built without it; .dxf and .svg need none");
-#endif
-        const int deg = degree.value_or(format == lac::ExportFormat::svg ? 3 : 5);
-        if (format == lac::ExportFormat::svg && deg != 3)
-          lac::throw_input_error("export_curve", "degree", deg, "3 for .svg (SVG paths hold cubic Bezier curves)");
+        const lac::PreparedExport prepared = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree},
+                                                                 {"export_curve", "path", "tolerance", "degree"});
         lac::ExportResult r;
         {
           py::gil_scoped_release release;
-          r = lac::to_bspline(c.curve, export_options(tolerance, deg, 1'000'000));
-          if (r.usable()) {
-#ifdef LAC_WITH_OCCT
-            lac::write_any(path, format, r.curve);
-#else
-            lac::write_file(path, format, r.curve);
-#endif
-          }
+          r = lac::export_curve(c.curve, path, prepared);
         }
         py::dict d = bspline_dict(r);
         d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
-        d["format"] = lac::to_string(format);
+        d["format"] = lac::to_string(prepared.format);
         return d;
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),

@@ -1,0 +1,88 @@
+#pragma once
+// One export request, one file: the format from the path's extension, the degree (5, or 3 for
+// .svg), the check that this build writes STEP and IGES, to_bspline and the writer. The CLI's
+// --export and Python's lac.export_curve both call it. Inline on purpose: whether STEP and IGES
+// are written is decided by the program that includes it (LAC_WITH_OCCT comes with lac::export).
+//
+//   const lac::PreparedExport p = lac::prepare_export({.path = "c.step", .tolerance = 1e-6}, names);
+//   const lac::ExportResult r = lac::export_curve(curve, "c.step", p);  // written when r.usable()
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "lac/common/error.hpp"
+#include "lac/export/to_bspline.hpp"
+#include "lac/export/write.hpp"
+#ifdef LAC_WITH_OCCT
+#include "lac/export/occt/occt_writer.hpp"
+#endif
+
+namespace lac {
+
+struct ExportRequest {
+  std::string path;            ///< its extension names the format (export_format_from_path)
+  double tolerance = 0;        ///< absolute; 0: kDefaultExportTolerance × length
+  std::optional<int> degree;   ///< 3 or 5; none: 3 for .svg (cubic Béziers), 5 otherwise
+  long max_spans = 1'000'000;  ///< ExportOptions::max_spans
+};
+
+/// The caller's names of the request's fields, for its InputErrors (CLI: "lac", "export",
+/// "export-tol", "export-degree"; Python: "export_curve", "path", "tolerance", "degree").
+struct ExportNames {
+  const char* who;
+  const char* path;
+  const char* tolerance;
+  const char* degree;
+};
+
+struct PreparedExport {
+  ExportFormat format = ExportFormat::dxf;
+  ExportOptions options;
+};
+
+/// Whether this program writes STEP and IGES (linked with lac::export).
+inline constexpr bool kExportsStepAndIges =
+#ifdef LAC_WITH_OCCT
+    true;
+#else
+    false;
+#endif
+
+/// Checks the request before any curve is computed: InputError naming the path for an unknown
+/// extension or STEP/IGES without OpenCASCADE, the tolerance unless ≥ 0 and finite, the degree
+/// unless 3 or 5 (3 for .svg).
+inline PreparedExport prepare_export(const ExportRequest& request, const ExportNames& names) {
+  PreparedExport p;
+  p.format = export_format_from_path(request.path, names.path, names.who);
+  if (!kExportsStepAndIges && (p.format == ExportFormat::step || p.format == ExportFormat::iges))
+    throw_input_error(names.who, names.path,
+                      "'" + request.path + "': " + to_string(p.format) +
+                          " needs OpenCASCADE, and this build has none (LAC_WITH_OCCT=OFF); .dxf and .svg need none");
+  if (!(request.tolerance >= 0 && std::isfinite(request.tolerance)))
+    throw_input_error(names.who, names.tolerance, request.tolerance, "[0, inf) (0: 1e-6 x the curve's length)");
+  const int degree = request.degree.value_or(p.format == ExportFormat::svg ? 3 : 5);
+  if (degree != 3 && degree != 5) throw_input_error(names.who, names.degree, degree, "3 or 5");
+  if (p.format == ExportFormat::svg && degree != 3)
+    throw_input_error(names.who, names.degree, degree, "3 for .svg (SVG paths hold cubic Bezier curves)");
+  p.options.tolerance = request.tolerance;
+  p.options.degree = degree;
+  p.options.max_spans = request.max_spans;
+  return p;
+}
+
+/// The certified B-spline of `curve` (to_bspline), written to `path` in the prepared format when
+/// it is usable (nothing is written otherwise). InputError naming "export" when the file cannot
+/// be written.
+inline ExportResult export_curve(const PlanarCurve& curve, const std::string& path, const PreparedExport& p) {
+  ExportResult r = to_bspline(curve, p.options);
+  if (r.usable()) {
+#ifdef LAC_WITH_OCCT
+    write_any(path, p.format, r.curve);
+#else
+    write_file(path, p.format, r.curve);
+#endif
+  }
+  return r;
+}
+
+}  // namespace lac
