@@ -25,9 +25,7 @@ struct ChainArgs {
 };
 
 std::string solver_help() {
-  std::string text = "Solver of each pair: g1: ";
-  for (const G1SolverInfo& s : g1_hermite_solvers()) text.append(s.name).append(" | ");
-  text.resize(text.size() - 3);
+  std::string text = "Solver of each pair: g1: " + solver_names(g1_hermite_solvers());
   text.append("; g2: ").append(solver_names(g2_solvers())).append(" (auto: g1 auto, g2 newton)");
   return text;
 }
@@ -45,7 +43,7 @@ Report solve(const ChainArgs& a) {
   p.closed = a.closed;
   ChainOptions o;
   if (a.solver != "auto") {
-    if (p.continuity == ChainContinuity::g1) o.g1.solver = a.solver;
+    if (p.continuity == ChainContinuity::g1) o.g1.solver = parse_g1_solver(a.solver);
     else o.g2.solver = parse_g2_solver(a.solver);
   }
   o.g1.winding = o.g2.winding = a.winding;

@@ -6,8 +6,8 @@ namespace lac::cli {
 namespace {
 
 std::string g1_solver_help() {
-  std::string text = "Solver: ";
-  for (const G1SolverInfo& s : g1_hermite_solvers()) text.append("\n  ").append(s.name).append(": ").append(s.description);
+  std::string text = "Solver: " + solver_names(g1_hermite_solvers()) + ":";
+  for (const auto& s : g1_hermite_solvers()) text.append("\n  ").append(s.name).append(": ").append(s.description);
   return text;
 }
 
@@ -35,7 +35,7 @@ void add_hermite_data_options(CLI::App& sub, G1HermiteArgs& a) {
 
 G1HermiteOptions g1_hermite_options(const G1HermiteArgs& a) {
   G1HermiteOptions o;
-  o.solver = a.solver;
+  o.solver = parse_g1_solver(a.solver);
   o.winding = a.winding;
   if (a.max_turning) o.max_turning = *a.max_turning;
   o.accept = a.common.accept;

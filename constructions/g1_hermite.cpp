@@ -15,6 +15,7 @@
 #include "lac/constructions/triangle_g1.hpp"
 #include "lac/curves/planar/la_segment_kernel.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
+#include "lac/solvers/detail/method_registry.hpp"
 #include "lac/solvers/root_1d.hpp"
 
 namespace lac {
@@ -90,15 +91,26 @@ G1Shape classify_input(double phi0, double phi1, double delta) {
   return G1Shape::other;
 }
 
-constexpr G1SolverInfo kSolvers[] = {
-    {"auto", "Newton on the reduced equation with its analytic derivative, safeguarded by a sign bracket (fast path)"},
-    {"bisection", "1-D registry bisection on the reduced equation in the bracket found around the guess"},
-    {"secant", "1-D registry secant (bracketed) on the reduced equation"},
-    {"toms748", "1-D registry TOMS 748 (Boost) on the reduced equation"},
-    {"ceres", "1-D registry Ceres on the reduced equation"},
-    {"triangle", "001's similar-triangle bisection on the control triangle (tangents on opposite sides, |turning| < pi)"},
-    {"s-curve", "004's Lambda search (alpha < 0, tangents on one side of the chord)"},
-};
+using G1Kind = G1Solver::Kind;
+constexpr std::string_view kNoOptions = "";
+
+// auto, the 1-D root registry's rows (names, aliases, descriptions) on the reduced equation, then
+// the two paper methods.
+std::vector<SolverMethodInfo<G1Solver>> make_g1_solvers() {
+  std::vector<SolverMethodInfo<G1Solver>> rows;
+  rows.push_back({G1Solver{}, "auto",
+                  {},
+                  "Newton on the reduced equation with its analytic derivative, safeguarded by a sign bracket (fast path)",
+                  kNoOptions});
+  for (const RootMethodInfo& m : root_methods())
+    rows.push_back({G1Solver{G1Kind::root, m.method}, m.name, m.aliases, m.description, m.options});
+  rows.push_back({G1Solver{G1Kind::triangle}, "triangle", {},
+                  "001's similar-triangle bisection on the control triangle (tangents on opposite sides, |turning| < pi)",
+                  kNoOptions});
+  rows.push_back({G1Solver{G1Kind::s_curve}, "s-curve", {}, "004's Lambda search (alpha < 0, tangents on one side of the chord)",
+                  kNoOptions});
+  return rows;
+}
 
 void check_problem(const G1HermiteProblem& pr) {
   require_finite("g1", "p0.x", pr.p0.real());
@@ -243,17 +255,19 @@ std::string_view to_string(G1Shape s) {
   return "other";
 }
 
-std::span<const G1SolverInfo> g1_hermite_solvers() { return kSolvers; }
+std::span<const SolverMethodInfo<G1Solver>> g1_hermite_solvers() {
+  static const std::vector<SolverMethodInfo<G1Solver>> rows = make_g1_solvers();
+  return rows;
+}
+std::string_view to_string(G1Solver s) { return detail::solver_method_name(g1_hermite_solvers(), s); }
+G1Solver parse_g1_solver(std::string_view name) {
+  return detail::parse_solver_method(g1_hermite_solvers(), name, "g1", "G1 solver");
+}
 
 void G1HermiteOptions::validate() const {
   bool known = false;
-  for (const G1SolverInfo& s : kSolvers) known = known || s.name == solver;
-  if (!known) {
-    std::string m(1, '\'');  // built step by step: GCC 12 warns (-Wrestrict) on "'" + std::string
-    m.append(solver).append("' is not one of");
-    for (const G1SolverInfo& s : kSolvers) m.append(" ").append(s.name);
-    throw_input_error("g1", "solver", m);
-  }
+  for (const SolverMethodInfo<G1Solver>& row : g1_hermite_solvers()) known = known || row.method == solver;
+  if (!known) throw_input_error("g1", "solver", "not a choice of g1_hermite_solvers() (parse_g1_solver gives one)");
   if (winding && (*winding < -100 || *winding > 100)) throw_input_error("g1", "winding", *winding, "[-100, 100]");
   if (!(max_turning >= kPi && max_turning <= 200 * kPi))
     throw_input_error("g1", "max_turning", max_turning, "[pi, 200 pi]");
@@ -466,7 +480,7 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
   bool converged = false;
   // α ≥ 0 beyond half a turn: the certified scan straight away (it brackets every root it meets).
   const bool scan_first = pr.alpha >= 0 && std::abs(nz.delta) > kPi;
-  if (o.solver == "auto" && !scan_first) {
+  if (o.solver.kind == G1Kind::automatic && !scan_first) {
     // Newton, each step limited to 2π in x and kept inside the domain; once two iterates have
     // opposite signs of f the step is kept inside their bracket (bisection otherwise).
     // α ≥ 0: f increases with x when Δ > 0 (x → ∞ puts the turning at the start, so the chord
@@ -543,7 +557,7 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
       const Trial t = nz.evaluate(b.lo);
       if (t.ok) best = t, xbest = b.lo, converged = std::abs(t.f) <= o.tolerance && t.I.real() > 0;
     } else if (b.ok) {
-      const RootMethod m = o.solver == "auto" ? RootMethod::toms748 : parse_root_method(o.solver);
+      const RootMethod m = o.solver.root;  // toms748 for auto
       RootOptions ro;
       ro.x_rtol = 1e-15;
       ro.x_atol = 1e-300;
@@ -601,7 +615,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   check_problem(pr);
   G1HermiteResult res;
   Summary& sum = res.summary;
-  sum.solver = o.solver;
+  sum.solver = std::string(to_string(o.solver));
   sum.integrator = std::string(name_of(o.integrator));
   sum.accept = o.accept;
   const Complex d = pr.p1 - pr.p0;
@@ -641,7 +655,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   }
 
   // The paper methods (turnings of at most π: the given winding, else winding 0).
-  if (o.solver == "triangle" || o.solver == "s-curve") {
+  if (o.solver.kind == G1Kind::triangle || o.solver.kind == G1Kind::s_curve) {
     const int k = o.winding.value_or(0);
     nz.delta = turning_of(k);
     res.info.winding = k;
@@ -649,16 +663,16 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     res.info.shape = classify_input(phi0, phi1, nz.delta);
     const bool convex = res.info.shape == G1Shape::convex && k == 0;
     const bool s = res.info.shape == G1Shape::s_shaped && k == 0 && pr.alpha < 0;
-    if (o.solver == "triangle" && !convex)
+    if (o.solver.kind == G1Kind::triangle && !convex)
       throw_input_error("g1", "solver", "'triangle' (001) handles tangents on opposite sides of the chord with "
                                         "|turning| < pi and winding 0 only; use 'auto'");
-    if (o.solver == "s-curve" && !s)
+    if (o.solver.kind == G1Kind::s_curve && !s)
       throw_input_error("g1", "solver", "'s-curve' (004) handles alpha < 0 with both tangents on the same side of the "
                                         "chord and winding 0 only; use 'auto'");
     const Complex t0 = std::polar(1.0, pr.theta0), t1 = std::polar(1.0, pr.theta1);
     PlanarCurve curve;
     Summary paper;
-    if (o.solver == "triangle") {
+    if (o.solver.kind == G1Kind::triangle) {
       // Tangent intersection a1 = p0 + μ t0 = p1 − ν t1 (μ, ν > 0 for convex data).
       const double cross = (std::conj(t0) * t1).imag();
       const double mu = (std::conj(d) * t1).imag() / cross;
@@ -685,7 +699,7 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
     // S-family); a G1 curve of another shape may exist, so for the G1 problem it is no proof.
     if (paper.status == Status::no_solution)
       sum.message = "g1: the '" + solver + "' method found no curve in its family (" +
-                    (o.solver == "triangle" ? "001's, without inflection" : "004's S-curves") +
+                    (o.solver.kind == G1Kind::triangle ? "001's, without inflection" : "004's S-curves") +
                     "), which is no proof for every G1 curve ('auto' searches every shape): " + sum.message,
       sum.status = Status::not_converged;
     if (paper.usable()) {

@@ -40,6 +40,8 @@
 #include "lac/common/summary.hpp"
 #include "lac/curves/planar/planar_curve.hpp"
 #include "lac/integrators/registry.hpp"
+#include "lac/solvers/method_info.hpp"
+#include "lac/solvers/root_1d.hpp"
 
 namespace lac {
 
@@ -61,20 +63,24 @@ struct G1HermiteProblem {
 enum class G1Shape { straight, convex, convex_inflection, s_shaped, other };
 std::string_view to_string(G1Shape s);
 
-struct G1SolverInfo {
-  std::string_view name;
-  std::string_view description;
+/// The G1 solver. automatic: safeguarded Newton on the reduced equation f with its analytic
+/// derivative (the fast path). root: that method of the 1-D root registry (solvers/root_1d.hpp)
+/// on f in the sign bracket found around the guess. triangle: 001's similar-triangle search
+/// (constructions/triangle_g1.hpp), tangents on opposite sides of the chord, |turning| < π only.
+/// s_curve: 004's Λ search (constructions/s_curve.hpp), α < 0 and tangents on one side only.
+struct G1Solver {
+  enum class Kind { automatic, root, triangle, s_curve } kind = Kind::automatic;
+  RootMethod root = RootMethod::toms748;  ///< the method of Kind::root (toms748 otherwise)
+  friend bool operator==(const G1Solver&, const G1Solver&) = default;
 };
-/// auto, bisection, secant, toms748, ceres, triangle, s-curve (for CLI help).
-std::span<const G1SolverInfo> g1_hermite_solvers();
+/// auto, the root registry's methods with their aliases (bisection, secant (newton), toms748,
+/// ceres), triangle, s-curve.
+std::span<const SolverMethodInfo<G1Solver>> g1_hermite_solvers();
+std::string_view to_string(G1Solver s);
+G1Solver parse_g1_solver(std::string_view name);  ///< a name or alias of g1_hermite_solvers(); InputError "solver" otherwise
 
 struct G1HermiteOptions {
-  /// "auto": safeguarded Newton on f with its analytic derivative (the fast path). A name of the
-  /// 1-D root registry (solvers/root_1d.hpp: bisection, secant, toms748, ceres): that method on f
-  /// in the sign bracket found around the guess. "triangle": 001's similar-triangle search
-  /// (constructions/triangle_g1.hpp), tangents on opposite sides of the chord, |turning| < π only.
-  /// "s-curve": 004's Λ search (constructions/s_curve.hpp), α < 0 and tangents on one side only.
-  std::string solver = "auto";
+  G1Solver solver{};  ///< default: automatic
   /// Used to verify the returned curve's end point when `verify` is set (summary.residuals and
   /// error_estimate; also the trial integrals of "triangle" and "s-curve"). The solve itself always
   /// runs on the built-in Gauss–Legendre kernel, which differentiates f.

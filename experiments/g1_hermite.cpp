@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
       std::map<G1Shape, Tally> by_shape;
       int not_applicable = 0;
       G1HermiteOptions o;
-      o.solver = solver;
+      o.solver = parse_g1_solver(solver);
       for (const test::G1Angles& a : set) {
         const G1HermiteProblem p{{0, 0}, a.theta0, {1, 0}, a.theta1, alpha};
         G1HermiteResult r;

@@ -47,7 +47,7 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
     p.alpha = in.number();
     G1HermiteOptions o;
     const auto solvers = g1_hermite_solvers();
-    o.solver = std::string(solvers[in.byte() % solvers.size()].name);
+    o.solver = solvers[in.byte() % solvers.size()].method;
     o.winding = in.int_in(-3, 3);
     o.verify = in.byte() % 2;
     const std::string what = "solve_g1_hermite p0 " + show_point(p.p0) + " theta0 " + show(p.theta0) + " p1 " +

@@ -317,7 +317,7 @@ inline PlanarSpec g1_spec(const G1Data& d, int k) {
 inline bool g1_curve_verified(const G1Data& d, int k, const char* solver = "auto") {
   G1HermiteOptions o;
   o.winding = k;
-  o.solver = solver;
+  o.solver = parse_g1_solver(solver);
   try {
     const G1HermiteResult r = solve_g1_hermite({d.p0, d.theta0, d.p1, d.theta1, d.alpha}, o);
     if (!r.usable()) return false;
@@ -383,7 +383,7 @@ inline Record run_g1(Rng& rng) {
   const std::string input = g1_input(d, solver, verify) + " integrator " + integrator;
   trace_input(input);
   G1HermiteOptions o;
-  o.solver = solver;
+  o.solver = parse_g1_solver(solver);
   o.winding = d.winding;
   o.verify = verify;
   G1HermiteResult res;

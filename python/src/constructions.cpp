@@ -20,7 +20,7 @@ namespace {
 const std::vector<OptionRow<lac::G1HermiteOptions>>& g1_table() {
   using O = lac::G1HermiteOptions;
   static const std::vector<OptionRow<O>> t{
-      {"solver", [](O& o, py::handle v) { o.solver = v.cast<std::string>(); },
+      {"solver", [](O& o, py::handle v) { o.solver = lac::parse_g1_solver(v.cast<std::string>()); },
        "auto | bisection | secant | toms748 | ceres | triangle | s-curve"},
       {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); },
        "only the turning theta1 - theta0 + 2 pi k (chord-relative angles), k in [-100, 100]; default: least turning"},

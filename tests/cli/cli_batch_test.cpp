@@ -2,6 +2,7 @@
 // options, JSON Lines or CSV rows, invalid rows reported without ending the batch, exit 2 / 3 at
 // the end.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -19,7 +20,7 @@ using Json = nlohmann::ordered_json;
 
 /// Writes `text` to a file of this test's own and returns its path.
 std::string batch_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / ("lac_cli_batch_test_" + name + ".csv");
+  const auto path = std::filesystem::temp_directory_path() / ("lac_cli_batch_test_" + std::to_string(::getpid()) + "_" + name + ".csv");
   std::ofstream(path) << text;
   return path.string();
 }

@@ -3,6 +3,7 @@
 // there), and must exit with the documented status: the "# exit N" at the end of the line, else 0.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -55,7 +56,7 @@ TEST(CliDocs, EveryCommandExitsAsDocumented) {
   const std::vector<Example> examples = console_commands(doc);
   ASSERT_GE(examples.size(), 10u) << doc;
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "lac_cli_docs_test";
+  const fs::path dir = fs::temp_directory_path() / ("lac_cli_docs_test_" + std::to_string(::getpid()));  // own dir per run
   fs::remove_all(dir);
   fs::create_directories(dir);
   fs::create_directory_symlink(fs::path(LAC_SOURCE_DIR) / "scripts", dir / "scripts");

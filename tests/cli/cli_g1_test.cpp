@@ -45,10 +45,21 @@ TEST(CliG1, TriangleHermiteAndLibraryAgree) {
   EXPECT_EQ(test::run_lac("g1 --p0 0,0 --theta0 0 --p1 2,1 --alpha -1").status, 2);  // no --theta1
 }
 
+// The solver names are the registries': an alias of the root registry names its method in g1 too.
+TEST(CliG1, SolverAliasesAreTheRootRegistrys) {
+  const auto j = test::run_lac_json(kTriangle + " --solver newton");
+  EXPECT_EQ(j["status"], "ok") << j.dump();
+  EXPECT_EQ(j["solver"], "secant") << j.dump();
+  const auto bad = test::run_lac("g1 --p0 0,0 --theta0 0.3 --p1 1,0 --theta1 -0.2 --alpha -1 --solver brent");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("solver"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("secant (alias newton)"), std::string::npos) << bad.out;
+}
+
 // Every solver name × every integrator (which checks the result and draws the points): the same curve.
 TEST(CliG1, EverySolverAndIntegrator) {
   const auto ref = test::run_lac_json(kTriangle);
-  for (const G1SolverInfo& s : g1_hermite_solvers()) {
+  for (const auto& s : g1_hermite_solvers()) {
     if (s.name == "s-curve") continue;  // S-shaped input only: below
     for (const MethodInfo& q : quadrature_methods()) {
       const std::string args = kTriangle + " --solver " + std::string(s.name) + " --integrator " + std::string(q.name) + " --samples 3";

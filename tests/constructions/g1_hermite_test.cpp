@@ -276,21 +276,21 @@ TEST(G1Hermite, EverySolverOfTheRegistry) {
   const G1HermiteResult ref_c = solve_g1_hermite(convex), ref_s = solve_g1_hermite(s);
   ASSERT_TRUE(ref_c.usable() && ref_s.usable());
   EXPECT_EQ(g1_hermite_solvers().size(), 7u);
-  for (const G1SolverInfo& info : g1_hermite_solvers()) {
+  for (const auto& info : g1_hermite_solvers()) {
     G1HermiteOptions o;
-    o.solver = std::string(info.name);
+    o.solver = info.method;
     const bool s_only = info.name == "s-curve";
     const G1HermiteProblem& p = s_only ? s : convex;
     const G1HermiteResult r = solve_g1_hermite(p, o);
-    check_solution(p, r, o.solver);
+    check_solution(p, r, std::string(info.name));
     const double L = (s_only ? ref_s : ref_c).curve.length();
-    EXPECT_NEAR(r.curve.length(), L, 1e-9 * L) << o.solver;
+    EXPECT_NEAR(r.curve.length(), L, 1e-9 * L) << info.name;
     if (info.name == "triangle") {
       EXPECT_EQ(test::thrown_parameter([&] { solve_g1_hermite(s, o); }), "solver");
     } else if (s_only) {
       EXPECT_EQ(test::thrown_parameter([&] { solve_g1_hermite(convex, o); }), "solver");
     } else {
-      EXPECT_EQ(solve_g1_hermite(s, o).summary.status, Status::ok) << o.solver;
+      EXPECT_EQ(solve_g1_hermite(s, o).summary.status, Status::ok) << info.name;
     }
   }
 }
@@ -396,7 +396,8 @@ TEST(G1Hermite, BadInputNamesTheParameter) {
     change(o);
     return test::thrown_parameter([&] { solve_g1_hermite(good, o); });
   };
-  EXPECT_EQ(opt([](auto& o) { o.solver = "newton-raphson"; }), "solver");
+  EXPECT_EQ(test::thrown_parameter([] { parse_g1_solver("newton-raphson"); }), "solver");
+  EXPECT_EQ(opt([](auto& o) { o.solver = {G1Solver::Kind::triangle, RootMethod::secant}; }), "solver");
   EXPECT_EQ(opt([](auto& o) { o.winding = 1000; }), "winding");
   EXPECT_EQ(opt([](auto& o) { o.tolerance = 0; }), "tolerance");
   EXPECT_EQ(opt([](auto& o) { o.max_iterations = 0; }), "max_iterations");

@@ -290,7 +290,7 @@ TEST(FuzzRegression, G1HermiteBeyondTheDoubleRangeIsNumericalFailure) {
     for (bool verify : {false, true}) {
       lac::G1HermiteOptions o;
       o.winding = c.winding;
-      o.solver = std::string(c.solver);
+      o.solver = lac::parse_g1_solver(c.solver);
       o.verify = verify;  // re-integrates the end point from p0: overflows near DBL_MAX
       const lac::G1HermiteResult r = lac::solve_g1_hermite(c.problem, o);
       const std::string what = std::string(c.solver) + " winding " + std::to_string(c.winding) + " verify " +
