@@ -50,7 +50,8 @@ double cross(C a, C b) { return a.real() * b.imag() - a.imag() * b.real(); }
 std::pair<double, double> curvature(const std::array<C, 4>& d) {
   const double v = std::abs(d[1]);
   const double k = cross(d[1], d[2]) / (v * v * v);
-  const double dk_dt = cross(d[1], d[3]) / (v * v * v) - 3 * cross(d[1], d[2]) * (d[1].real() * d[2].real() + d[1].imag() * d[2].imag()) / std::pow(v, 5);
+  const double dk_dt = cross(d[1], d[3]) / (v * v * v) -
+                       3 * cross(d[1], d[2]) * (d[1].real() * d[2].real() + d[1].imag() * d[2].imag()) / std::pow(v, 5);
   return {k, dk_dt / v};
 }
 
@@ -100,8 +101,12 @@ int main(int argc, char** argv) {
   std::string out = "results";
   int per_piece = 64, plot_points = 400;
   app.add_option("--out", out, "Output folder")->capture_default_str();
-  app.add_option("--per-piece", per_piece, "Samples per Bezier piece for the measures")->capture_default_str()->check(CLI::Range(2, 10000));
-  app.add_option("--plot-points", plot_points, "Samples per case in export_lcg_points.csv")->capture_default_str()->check(CLI::Range(2, 100000));
+  app.add_option("--per-piece", per_piece, "Samples per Bezier piece for the measures")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 10000));
+  app.add_option("--plot-points", plot_points, "Samples per case in export_lcg_points.csv")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 100000));
   CLI11_PARSE(app, argc, argv);
   std::filesystem::create_directories(out);
   const std::string cmd = io::command_line(argc, argv);
@@ -116,17 +121,19 @@ int main(int argc, char** argv) {
     if (g.usable()) cases.push_back({"g2 acceptance", g.curve});
     const G1HermiteResult s = solve_g1_hermite({{0, 0}, 0, {2, 1}, std::numbers::pi / 3, 2});
     if (s.usable()) cases.push_back({"g1 segment", s.curve});
-    const ChainResult c = solve_chain({.points = {{0, 0}, {2, -0.5}, {4, 0.3}, {5, 2}, {4, 4}, {2, 4.6}, {0.2, 3.8}, {-0.8, 2}},
-                                       .alpha = -0.5,
-                                       .continuity = ChainContinuity::g2,
-                                       .closed = true});
+    const ChainResult c =
+        solve_chain({.points = {{0, 0}, {2, -0.5}, {4, 0.3}, {5, 2}, {4, 4}, {2, 4.6}, {0.2, 3.8}, {-0.8, 2}},
+                     .alpha = -0.5,
+                     .continuity = ChainContinuity::g2,
+                     .closed = true});
     if (c.usable()) cases.push_back({"g2 chain", c.curve});
   }
 
   std::ofstream pts(std::filesystem::path(out) / "export_lcg_points.csv");
   pts << "# written by: " << cmd << "\n";
   pts << "# samples of the LA curves of export_lcg.md and their B-spline exports; s arc length of the LA curve (the "
-         "B-spline's parameter); kappa signed curvature; kappa_la the LA curve's at the same s; x_lcg = log rho, y_lcg = log(rho ds/drho) (empty where "
+         "B-spline's parameter); kappa signed curvature; kappa_la the LA curve's at the same s; x_lcg = log rho, y_lcg "
+         "= log(rho ds/drho) (empty where "
          "kappa or its derivative is 0); degree 0 = the LA curve itself\n";
   pts << "curve,degree,tolerance,segment,alpha,s,kappa,kappa_la,x_lcg,y_lcg\n";
   pts.precision(9);
@@ -134,8 +141,18 @@ int main(int argc, char** argv) {
   auto cell = [](double v) { return std::isfinite(v) ? io::fmt(v, 9) : std::string(); };
 
   io::Table t;
-  t.columns = {"curve", "segments", "with LCG", "degree", "tolerance", "spans", "max_deviation / length",
-               "LA slope error", "B-spline slope error", "max LCG gap", "median LCG gap", "κ error"};
+  t.columns = {"curve",
+               "segments",
+               "with LCG",
+               "degree",
+               "tolerance",
+               "spans",
+               "max_deviation / length",
+               "LA slope error",
+               "B-spline slope error",
+               "max LCG gap",
+               "median LCG gap",
+               "κ error"};
   for (const Case& c : cases) {
     const double length = c.curve.length();
     // The LA curve itself (degree 0) at plot_points.
@@ -144,8 +161,8 @@ int main(int argc, char** argv) {
       const size_t k = c.curve.segment_at(s);
       const double kappa = c.curve.kappa_at(s);
       const auto [x, y] = lcg(kappa, c.curve.dkappa_ds_at(s));
-      pts << c.name << ",0,0," << k << "," << c.curve.segments()[k].law().alpha << "," << cell(s) << ","
-          << cell(kappa) << "," << cell(kappa) << "," << cell(x) << "," << cell(y) << "\n";
+      pts << c.name << ",0,0," << k << "," << c.curve.segments()[k].law().alpha << "," << cell(s) << "," << cell(kappa)
+          << "," << cell(kappa) << "," << cell(x) << "," << cell(y) << "\n";
     }
     for (const int degree : {5, 3}) {
       for (const double rel : {1e-3, 1e-6}) {
@@ -203,8 +220,7 @@ int main(int argc, char** argv) {
         t.add_row({c.name, std::to_string(c.curve.segments().size()), std::to_string(with_lcg), std::to_string(degree),
                    io::sci(rel, 1), std::to_string(r.info.spans), io::sci(r.info.max_deviation / length, 2),
                    any ? io::sci(la_slope_err, 1) : "—", any ? io::sci(slope_err, 2) : "—",
-                   any ? io::sci(dev_max, 2) : "—", any ? io::sci(dev[dev.size() / 2], 2) : "—",
-                   io::sci(dkappa, 2)});
+                   any ? io::sci(dev_max, 2) : "—", any ? io::sci(dev[dev.size() / 2], 2) : "—", io::sci(dkappa, 2)});
       }
     }
   }
@@ -222,10 +238,12 @@ int main(int argc, char** argv) {
       " parameters inside every piece (never at a knot), and are compared with the LA curve's closed-form κ and "
       "dκ/ds at the same arc length s (the B-spline's parameter). LCG: x = log ρ, y = log(ρ ds/dρ) = log|κ/(dκ/ds)|, "
       "per LA segment whose curvature changes (`with LCG`: arcs have none), on samples with |κ_LA| ≥ 1e-3 of the "
-      "segment's largest (the LCG runs off to infinity at an inflection). `LA slope error`: largest |slope − α| over the segments, the least-squares slope "
+      "segment's largest (the LCG runs off to infinity at an inflection). `LA slope error`: largest |slope − α| over "
+      "the segments, the least-squares slope "
       "of the LA curve's own LCG samples (a check that its graph is the LA line); "
       "`B-spline slope error`: the same for the B-spline's LCG; `max / median LCG gap`: vertical distance of the "
-      "B-spline's LCG points from the LA line, over all segments with an LCG; `κ error`: max |κ_b − κ_LA| / max |κ_LA|, the curvature "
+      "B-spline's LCG points from the LA line, over all segments with an LCG; `κ error`: max |κ_b − κ_LA| / max "
+      "|κ_LA|, the curvature "
       "difference over the whole curve. Plots: results/figures/export_lcg.png "
       "(experiments/figures/export_lcg.py).";
   doc.notes =

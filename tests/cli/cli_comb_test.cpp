@@ -80,7 +80,7 @@ TEST(CliComb, TeethFollowTheReportedCurvature) {
     EXPECT_NEAR(dx, c * kappa * std::sin(theta), 1e-9 * c * kmax) << i;
     EXPECT_NEAR(dy, -c * kappa * std::cos(theta), 1e-9 * c * kmax) << i;
     EXPECT_NEAR(dx * std::cos(theta) + dy * std::sin(theta), 0, 1e-9 * c * kmax) << i;  // along the normal
-    EXPECT_NEAR(std::hypot(dx, dy), c * std::abs(kappa), 1e-9 * c * kmax) << i;        // ∝ |κ|
+    EXPECT_NEAR(std::hypot(dx, dy), c * std::abs(kappa), 1e-9 * c * kmax) << i;         // ∝ |κ|
     longest = std::max(longest, std::hypot(dx, dy));
     (kappa > 0 ? positive : negative) += 1;
   }

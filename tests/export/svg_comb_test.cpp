@@ -81,7 +81,7 @@ TEST(ExportSvgComb, TeethAreNormalAndProportionalToTheBezierCurvature) {
       kmax = std::max(kmax, std::abs(kappa));
       if (len == 0) continue;
       EXPECT_LT(std::abs((std::conj(tangent) * tooth).real()) / len, 1e-7) << k;  // normal to the tangent
-      const double side = (std::conj(C(0, 1) * tangent) * tooth).real() / len;   // along the left normal
+      const double side = (std::conj(C(0, 1) * tangent) * tooth).real() / len;    // along the left normal
       EXPECT_NEAR(side, kappa > 0 ? -1.0 : 1.0, 1e-7) << k;
       ++sides[kappa > 0];
       if (std::abs(kappa) > 1e-3 * kmax) ratio.push_back(len / std::abs(kappa));
@@ -93,7 +93,8 @@ TEST(ExportSvgComb, TeethAreNormalAndProportionalToTheBezierCurvature) {
     // The longest tooth: 0.15 of the control points' diagonal.
     double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
     for (const C& c : r.curve.control_points)
-      x0 = std::min(x0, c.real()), x1 = std::max(x1, c.real()), y0 = std::min(y0, c.imag()), y1 = std::max(y1, c.imag());
+      x0 = std::min(x0, c.real()), x1 = std::max(x1, c.real()), y0 = std::min(y0, c.imag()),
+      y1 = std::max(y1, c.imag());
     EXPECT_NEAR(longest, kCombFraction * std::hypot(x1 - x0, y1 - y0), 1e-9 * longest);
     EXPECT_NEAR(*hi * kmax, longest, 1e-6 * longest);
   }
