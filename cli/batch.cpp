@@ -178,7 +178,7 @@ long current_batch_row() { return g_batch_row; }
 void run_command(CLI::App& sub, const CommonArgs& common, const std::function<Report()>& solve,
                  const std::function<void()>& restore) {
   if (common.batch.empty()) {
-    print_report(solve(), common.format);
+    print_report(solve(), common.format, common.comb);
     return;
   }
   if (common.format == "svg") throw_input_error("lac", "format", "svg draws one curve; --batch prints json or csv");

@@ -1,10 +1,24 @@
 #include "cli/options.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <numbers>
 
 #include "lac/common/error.hpp"
 
 namespace lac::cli {
+
+namespace {
+
+/// An --export file name with the .svg extension (any case).
+bool ends_with_svg(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".svg";
+}
+
+}  // namespace
 
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
   sub.add_option("--samples", a.samples,
@@ -24,6 +38,11 @@ void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
                  "Accept bound on the achieved error, relative to the curve's size (chord, or arc length for "
                  "points), (0, 0.1]: a result beyond it is inaccurate (exit 3)")
       ->capture_default_str();
+  if (planar)
+    sub.add_flag("--comb", a.comb,
+                 "Draw the curvature comb (teeth along the normal, length proportional to |kappa|, on the side away "
+                 "from the centre of curvature; the longest 0.15 x the drawing's diagonal) on the --format svg "
+                 "drawing and on an --export FILE.svg (the B-spline's own curvature)");
 }
 
 void add_export_options(CLI::App& sub, CommonArgs& a) {
@@ -42,6 +61,10 @@ void add_export_options(CLI::App& sub, CommonArgs& a) {
 int sample_count(const CommonArgs& a) {
   if (a.samples == 1 || a.samples < 0 || a.samples > 1'000'000)
     throw_input_error("lac", "samples", a.samples, "0 or [2, 1000000]");
+  if (a.comb && a.format != "svg" && !ends_with_svg(a.export_path))
+    throw_input_error("lac", "comb",
+                      "--comb draws on an SVG: it needs --format svg (the sampled curve) or --export FILE.svg (the "
+                      "B-spline)");
   return a.samples == 0 && a.format == "svg" ? 200 : a.samples;
 }
 

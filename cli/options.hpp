@@ -32,16 +32,22 @@ struct CommonArgs {
   std::optional<double> export_tol;
   /// --export-degree: 5 (G2; the default) or 3 (G1; the only one for .svg, which holds cubic Béziers).
   std::optional<int> export_degree;
+  /// --comb (planar commands): the curvature comb on the --format svg drawing (from the samples'
+  /// kappa) and on an --export FILE.svg (the B-spline's own curvature, SvgOptions in
+  /// export/write.hpp). InputError "comb" without either SVG output.
+  bool comb = false;
 };
 
-/// Adds --samples, --format (json | csv, and svg when `planar`), --batch, --degrees and --accept.
+/// Adds --samples, --format (json | csv, and svg when `planar`), --batch, --degrees, --accept and,
+/// when `planar`, --comb.
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
 
 /// Adds --export FILE, --export-tol T and --export-degree D (the planar constructions: cli/export.hpp).
 void add_export_options(CLI::App& sub, CommonArgs& a);
 
 /// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError
-/// "samples" unless 0 or in [2, 10^6].
+/// "samples" unless 0 or in [2, 10^6]; InputError "comb" for --comb without --format svg or
+/// --export FILE.svg.
 int sample_count(const CommonArgs& a);
 
 /// An angle from the command line in radians (it was given in degrees with --degrees).

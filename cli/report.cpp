@@ -53,11 +53,11 @@ Json evaluation_report(Status status, const std::string& message, long evaluatio
   return common_keys(status, message, nullptr, evaluations, seconds, "", integrator, {}, error, accept);
 }
 
-void print_report(const Report& report, const std::string& format) {
+void print_report(const Report& report, const std::string& format, bool comb) {
   if (format == "csv") {
     write_csv_report(std::cout, report.json);
   } else if (format == "svg") {
-    write_svg(std::cout, report);
+    write_svg(std::cout, report, comb);
   } else {
     std::cout << report.json.dump(2) << "\n";
   }

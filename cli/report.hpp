@@ -67,8 +67,9 @@ void add_space_curve(Json& report, const SpaceCurve& curve);
 /// `n` points {s, x, y, z, kappa, tau} uniform in s; x, y, z null where the frame failed.
 void add_space_points(Json& report, const SpaceCurve& curve, int n);
 
-/// Prints in `format`: json (indented), csv (write_csv_report) or svg (write_svg).
-void print_report(const Report& report, const std::string& format);
+/// Prints in `format`: json (indented), csv (write_csv_report) or svg (write_svg, with the
+/// curvature comb when `comb`).
+void print_report(const Report& report, const std::string& format, bool comb = false);
 /// Prints a flat record (`special …`): json (indented) or csv (a header line and a value line).
 void print_record(const Json& record, const std::string& format);
 
@@ -80,7 +81,12 @@ void write_csv_report(std::ostream& out, const Json& report);
 void flatten_summary(const Json& report, std::vector<std::string>& keys, std::vector<const Json*>& values);
 /// One CSV cell: strings quoted when needed, numbers in their shortest exact form, null empty.
 std::string csv_cell(const Json& value);
-/// SVG of a planar report: its control polygon (grey) and points, one colour per segment.
-void write_svg(std::ostream& out, const Report& report);
+/// SVG of a planar report: its control polygon (grey) and points, one colour per segment. With
+/// `comb` also the curvature comb of the points (their theta and kappa): a <desc> stating the
+/// convention and scale, a <path id="comb-teeth"> of "M x,y L x,y" pairs, one per point with a
+/// curvature, from the point to point − c·κ·N (N the unit left normal, so away from the centre of
+/// curvature; c makes the longest tooth 0.15 of the drawing's bounding-box diagonal), and a
+/// <polyline id="comb-tips"> through the tips (y flipped, as the curve).
+void write_svg(std::ostream& out, const Report& report, bool comb = false);
 
 }  // namespace lac::cli

@@ -114,10 +114,10 @@ void write_iges(const std::string& path, const BSpline& b) {
   }
 }
 
-void write_any(const std::string& path, ExportFormat format, const BSpline& b) {
+void write_any(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg) {
   if (format == ExportFormat::step) return write_step(path, b);
   if (format == ExportFormat::iges) return write_iges(path, b);
-  write_file(path, format, b);
+  write_file(path, format, b, svg);
 }
 
 }  // namespace lac

@@ -14,7 +14,7 @@ namespace lac {
 /// InputError naming "export" when the file cannot be written.
 void write_step(const std::string& path, const BSpline& b);
 void write_iges(const std::string& path, const BSpline& b);
-/// Any format of export/write.hpp.
-void write_any(const std::string& path, ExportFormat format, const BSpline& b);
+/// Any format of export/write.hpp (`svg` for the SVG format only).
+void write_any(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg = {});
 
 }  // namespace lac
