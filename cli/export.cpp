@@ -36,7 +36,8 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
     throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
   const PreparedExport prepared = prepare_export({.path = common.export_path,
                                                   .tolerance = common.export_tol.value_or(0.0),
-                                                  .degree = common.export_degree},
+                                                  .degree = common.export_degree,
+                                                  .comb = common.comb},
                                                  {"lac", "export", "export-tol", "export-degree"});
   if (curve == nullptr) {
     report["export"] = nullptr;

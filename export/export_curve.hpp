@@ -24,6 +24,7 @@ struct ExportRequest {
   double tolerance = 0;        ///< absolute; 0: kDefaultExportTolerance × length
   std::optional<int> degree;   ///< 3 or 5; none: 3 for .svg (cubic Béziers), 5 otherwise
   long max_spans = 1'000'000;  ///< ExportOptions::max_spans
+  bool comb = false;           ///< .svg: the B-spline's curvature comb (SvgOptions)
 };
 
 /// The caller's names of the request's fields, for its InputErrors (CLI: "lac", "export",
@@ -38,6 +39,7 @@ struct ExportNames {
 struct PreparedExport {
   ExportFormat format = ExportFormat::dxf;
   ExportOptions options;
+  SvgOptions svg;
 };
 
 /// Whether this program writes STEP and IGES (linked with lac::export).
@@ -67,6 +69,7 @@ inline PreparedExport prepare_export(const ExportRequest& request, const ExportN
   p.options.tolerance = request.tolerance;
   p.options.degree = degree;
   p.options.max_spans = request.max_spans;
+  p.svg.comb = request.comb;
   return p;
 }
 
@@ -77,9 +80,9 @@ inline ExportResult export_curve(const PlanarCurve& curve, const std::string& pa
   ExportResult r = to_bspline(curve, p.options);
   if (r.usable()) {
 #ifdef LAC_WITH_OCCT
-    write_any(path, p.format, r.curve);
+    write_any(path, p.format, r.curve, p.svg);
 #else
-    write_file(path, p.format, r.curve);
+    write_file(path, p.format, r.curve, p.svg);
 #endif
   }
   return r;

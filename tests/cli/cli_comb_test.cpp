@@ -2,7 +2,11 @@
 // (their x, y, theta, kappa), and its refusal without an SVG output.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <fstream>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -96,6 +100,22 @@ TEST(CliComb, DrawsOnEveryPlanarSvgCommand) {
     ASSERT_EQ(svg.status, 0) << cmd << "\n" << svg.out;
     EXPECT_EQ(parse_teeth(attribute(svg.out, "comb-teeth", "d")).size(), 30u) << cmd;
   }
+}
+
+// --export FILE.svg --comb: the exported B-spline's SVG carries its comb (one tooth per parameter
+// t = i/16 of each cubic piece, export/write.hpp SvgOptions); without --comb it has none.
+TEST(CliComb, ExportedSvgCarriesTheComb) {
+  const std::string path = ::testing::TempDir() + "lac_comb_export_" + std::to_string(::getpid()) + ".svg";
+  for (const bool comb : {true, false}) {
+    const auto j = test::run_lac_json(kG2 + " --export " + path + (comb ? " --comb" : ""));
+    ASSERT_EQ(j["export"]["status"], "ok") << j.dump();
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    const size_t pieces = (j["export"]["control_points"].get<size_t>() - 2) / 2;  // cubic spans: 2N + 2 points
+    EXPECT_EQ(parse_teeth(attribute(text.str(), "comb-teeth", "d")).size(), comb ? pieces * 17 : 0u) << j.dump();
+  }
+  std::remove(path.c_str());
 }
 
 TEST(CliComb, WithoutAnSvgOutputIsInvalid) {
