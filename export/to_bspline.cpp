@@ -285,7 +285,8 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
       const SpanEndPosition pk = seg.position(u1);
       r.summary.evaluations += pk.evaluations;
       if (!usable(pk.status) || !std::isfinite(pk.error))
-        return fail(Status::numerical_failure, "the position at s = " + format_number(s_base + s1) + " failed: " + pk.message);
+        return fail(pk.status == Status::max_iterations ? Status::max_iterations : Status::numerical_failure,
+                    "the position at s = " + format_number(s_base + s1) + " failed: " + pk.message);
       std::complex<double> p1 = pk.point;
       double err1 = pk.error;
       std::complex<double> t1 = std::polar(1.0, seg.theta(u1));
