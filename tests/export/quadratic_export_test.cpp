@@ -146,4 +146,3 @@ TEST(QuadraticExport, BadInput) {
 
 }  // namespace
 }  // namespace lac
-
