@@ -86,11 +86,35 @@ double max_quadratic(double b, double c, double lo, double hi) {
   return v;
 }
 
+}  // namespace
+
+std::array<double, 5> detail::quadratic_derivative_bounds(const QuadraticLaCurve& c, double s0, double s1) {
+  const auto P = derivative_polynomials(c.alpha(), c.gamma());
+  auto log_kappa = [&](double s) {
+    if (c.has_inflection() && s == c.s_at_zero_kappa()) return -kInf;
+    return c.solve_log_kappa(s).log_kappa;
+  };
+  // u = log|κ| at the ends, widened by 1e-9 (1 + |u|) for the solver's rounding.
+  double u0 = log_kappa(s0), u1 = log_kappa(s1);
+  if (u0 > u1) std::swap(u0, u1);
+  const double lo = u0 - 1e-9 * (1 + std::abs(u0)), hi = u1 + 1e-9 * (1 + std::abs(u1));
+  std::array<double, 5> k{};
+  k[0] = std::exp(hi);
+  for (int j = 1; j < 5; ++j) {
+    const double p = max_abs_poly(P[static_cast<size_t>(j)], lo, hi);
+    k[static_cast<size_t>(j)] =
+        p == 0 ? 0.0 : std::pow(c.lambda(), j) * p * std::exp(max_quadratic(1 + j * c.alpha(), j * c.gamma(), lo, hi));
+  }
+  return k;
+}
+
+namespace {
+
 /// The arc [s0, s1] of the curve in the parameter w = s.
 class QuadraticSource final : public detail::SpanSource {
  public:
   QuadraticSource(const QuadraticLaCurve& c, double s0, double s1)
-      : c_(c), s0_(s0), s1_(s1), P_(derivative_polynomials(c.alpha(), c.gamma())) {}
+      : c_(c), s0_(s0), s1_(s1) {}
   double w_begin() const override { return s0_; }
   double w_end() const override { return s1_; }
   std::vector<double> breaks() const override {
@@ -101,18 +125,7 @@ class QuadraticSource final : public detail::SpanSource {
   double arc(double w) const override { return w - s0_; }
   double span_length(double w0, double w1) const override { return w1 - w0; }
   std::array<double, 5> derivative_bounds(double w0, double w1) const override {
-    // u = log|κ| at the ends, widened by 1e-9 (1 + |u|) for the solver's rounding.
-    double u0 = log_kappa(w0), u1 = log_kappa(w1);
-    if (u0 > u1) std::swap(u0, u1);
-    const double lo = u0 - 1e-9 * (1 + std::abs(u0)), hi = u1 + 1e-9 * (1 + std::abs(u1));
-    std::array<double, 5> k{};
-    k[0] = std::exp(hi);
-    for (int j = 1; j < 5; ++j) {
-      const double p = max_abs_poly(P_[static_cast<size_t>(j)], lo, hi);
-      k[static_cast<size_t>(j)] =
-          p == 0 ? 0.0 : std::pow(c_.lambda(), j) * p * std::exp(max_quadratic(1 + j * c_.alpha(), j * c_.gamma(), lo, hi));
-    }
-    return k;
+    return detail::quadratic_derivative_bounds(c_, w0, w1);
   }
   double theta(double w) const override { return c_.theta_at_s(w); }
   double kappa(double w) const override { return c_.kappa_at_s(w); }
@@ -154,13 +167,8 @@ class QuadraticSource final : public detail::SpanSource {
   }
 
  private:
-  double log_kappa(double w) const {
-    if (c_.has_inflection() && w == c_.s_at_zero_kappa()) return -kInf;
-    return c_.solve_log_kappa(w).log_kappa;
-  }
   const QuadraticLaCurve& c_;
   double s0_, s1_;
-  std::array<std::array<double, 4>, 5> P_;
   static constexpr long kBudgetCalls = 4;
   mutable double last_w_ = 0;
   mutable long spent_gk_ = 0, spent_gl_ = 0;

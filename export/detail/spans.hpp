@@ -61,6 +61,10 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
 /// InputError "tolerance" unless ≥ 0 and finite, "max_spans" unless ≥ 1, "degree" unless 3 or 5.
 void validate_export_options(const ExportOptions& options);
 
+/// k_j ≥ |κ^(j)(s)| (j = 0 … 4) on [s0, s1] of a quadratic LA curve, which holds no inflection
+/// inside (to_bspline_quadratic.cpp derives them from 003's Eq. (4.3)).
+std::array<double, 5> quadratic_derivative_bounds(const QuadraticLaCurve& c, double s0, double s1);
+
 /// A stretch of the curve along which the LA curvature is monotone, for the curvature check:
 /// its end (arc length along the whole curve), its curvature at both ends and the curve's own
 /// curvature jump at its start (0 for the first and at a G2 joint).

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <random>
 #include <vector>
 
 #include "lac/common/error.hpp"
 #include "lac/curves/quadratic/quadratic_position.hpp"
+#include "lac/export/detail/spans.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/geometry/quadratic_geometry.hpp"
 
@@ -92,6 +94,45 @@ TEST(QuadraticExport, BoundIsCertifiedOnRandomCurves) {
   // Most curves are certified, and the bound is not absurdly loose (the sampling sees a fair part of it).
   EXPECT_GE(ok, curves * 9 / 10);
   EXPECT_GT(median, 1e-3);
+}
+
+// The closed-form bounds of |κ^(j)| on a span (export/to_bspline_quadratic.cpp) against κ
+// (kappa_at_s), κ' (geometry's dkappa_ds_at) and κ'', κ''' (central differences of κ') sampled
+// on the span: never below them, and close to them on short spans.
+TEST(QuadraticExport, DerivativeBoundsHoldAndAreTight) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::array<double, 4> worst_ratio{1, 1, 1, 1};  // smallest sampled max / bound per order
+  int spans = 0;
+  for (int i = 0; i < 100; ++i) {
+    const QuadraticLaCurve c(-3 + 7 * U(rng), -1 + 2 * U(rng), 0.3 * std::pow(10.0, U(rng)));
+    const Interval range = c.default_range();
+    if (!std::isfinite(range.hi - range.lo) || range.hi - range.lo > 1e4) continue;
+    const double h = (range.hi - range.lo) * 0.01 * (1 + 4 * U(rng));
+    const double s0 = range.lo + (range.hi - range.lo - h) * U(rng), s1 = s0 + h;
+    const std::array<double, 5> k = detail::quadratic_derivative_bounds(c, s0, s1);
+    const double d = 1e-3 * h;
+    std::array<double, 4> sampled{};
+    for (int j = 0; j <= 40; ++j) {
+      const double s = s0 + d + (h - 2 * d) * j / 40.0;
+      const double f0 = dkappa_ds_at(c, s), fp = dkappa_ds_at(c, s + d), fm = dkappa_ds_at(c, s - d);
+      const std::array<double, 4> v{std::abs(c.kappa_at_s(s)), std::abs(f0), std::abs((fp - fm) / (2 * d)),
+                                    std::abs((fp - 2 * f0 + fm) / (d * d))};
+      for (size_t o = 0; o < 4; ++o) sampled[o] = std::max(sampled[o], v[o]);
+    }
+    SCOPED_TRACE("alpha " + format_number(c.alpha()) + " gamma " + format_number(c.gamma()) + " lambda " +
+                 format_number(c.lambda()) + " span [" + format_number(s0) + ", " + format_number(s1) + "]");
+    // Orders 0, 1 exact up to rounding; 2, 3 carry the differences' O(d²) error.
+    for (size_t o = 0; o < 4; ++o) EXPECT_LE(sampled[o], k[o] * (o < 2 ? 1 + 1e-12 : 1 + 1e-4)) << "order " << o;
+    ++spans;
+    for (size_t o = 0; o < 4; ++o)
+      if (k[o] > 0) worst_ratio[o] = std::min(worst_ratio[o], sampled[o] / k[o]);
+  }
+  std::printf("%d spans; smallest sampled max / bound for |kappa^(j)|, j = 0..3: %.3g %.3g %.3g %.3g\n", spans,
+              worst_ratio[0], worst_ratio[1], worst_ratio[2], worst_ratio[3]);
+  EXPECT_GE(spans, 90);
+  EXPECT_GT(worst_ratio[0], 0.9);
+  EXPECT_GT(worst_ratio[1], 0.5);
 }
 
 TEST(QuadraticExport, StructureAndContinuity) {
