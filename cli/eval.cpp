@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "cli/batch.hpp"
+#include "cli/export.hpp"
 #include "cli/options.hpp"
 #include "cli/quadrature_args.hpp"
 #include "io/timing.hpp"
@@ -19,16 +20,15 @@ struct EvalArgs {
   QuadratureArgs quadrature{.integrator = "gauss-kronrod"};
 };
 
-/// The arc of the standard form from s = 0 to `s_end` as a segment (none when s_end = 0 or its
-/// values are not representable).
-Json standard_arc(const LaCurve& curve, double s_end) {
-  Json segs = Json::array();
-  if (s_end == 0) return segs;
+/// The arc of the standard form from s = 0 to `s_end` as a curve of one segment (none when
+/// s_end = 0 or its values are not representable).
+std::optional<PlanarCurve> standard_arc(const LaCurve& curve, double s_end) {
+  if (s_end == 0) return std::nullopt;
   try {
-    segs.push_back(planar_segment(to_segment(StandardPiece{curve, Parameter::s, 0.0, s_end, {}})));
+    return PlanarCurve({to_segment(StandardPiece{curve, Parameter::s, 0.0, s_end, {}})});
   } catch (const InputError&) {
+    return std::nullopt;
   }
-  return segs;
 }
 
 Report solve(const EvalArgs& a) {
@@ -58,7 +58,9 @@ Report solve(const EvalArgs& a) {
   Json& j = r.json;
   const double s_end = at.point.s;
   set_extent(j, std::abs(s_end), 1.0, at.point.kappa);
-  j["segments"] = standard_arc(curve, s_end);
+  const std::optional<PlanarCurve> arc = standard_arc(curve, s_end);
+  j["segments"] = Json::array();
+  if (arc) j["segments"].push_back(planar_segment(arc->segments().front()));
   j["point"] = planar_point(at);
   j["info"] = {{"form", std::string(to_string(at.form))},
                {"rho", number(at.point.rho)},
@@ -68,6 +70,7 @@ Report solve(const EvalArgs& a) {
     for (const PositionResult& q : pts) arr.push_back(planar_point(q));
     j["points"] = std::move(arr);
   }
+  add_export(j, usable(at.status) && arc ? &*arc : nullptr, a.common);  // --export: that arc
   return r;
 }
 
@@ -81,6 +84,7 @@ void setup(CLI::App& app) {
   sub->add_option("--form", a->form, "Position integral: theta | s | auto")->capture_default_str();
   add_quadrature_options(*sub, a->quadrature);
   add_common_options(*sub, a->common, true);
+  add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);
 }
 

@@ -1,5 +1,7 @@
 #include "cli/export.hpp"
 
+#include <functional>
+
 #include "cli/batch.hpp"
 #include "lac/common/error.hpp"
 #include "lac/export/export_curve.hpp"
@@ -28,9 +30,11 @@ auto as_export_error(F&& f) {
   }
 }
 
-}  // namespace
+/// The export of one curve: to_bspline and the writer (export_curve), given the path and the request.
+using Exporter = std::function<ExportResult(const std::string& path, const PreparedExport& prepared)>;
 
-void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common) {
+/// add_export for any curve (`have`: whether there is a usable curve to export).
+void add_export_with(Json& report, bool have, const CommonArgs& common, const Exporter& run) {
   if (common.export_path.empty()) return;
   if (common.export_tol && !(*common.export_tol > 0 && std::isfinite(*common.export_tol)))
     throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
@@ -39,12 +43,12 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
                                                   .degree = common.export_degree,
                                                   .comb = common.comb},
                                                  {"lac", "export", "export-tol", "export-degree"});
-  if (curve == nullptr) {
+  if (!have) {
     report["export"] = nullptr;
     return;
   }
   const std::string path = row_path(common.export_path, current_batch_row());
-  const ExportResult r = as_export_error([&] { return export_curve(*curve, path, prepared); });
+  const ExportResult r = as_export_error([&] { return run(path, prepared); });
   record_status(r.summary.status);
   report["export"] = {{"file", r.usable() ? Json(path) : Json(nullptr)},
                       {"format", to_string(prepared.format)},
@@ -60,6 +64,19 @@ void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common
                       {"max_curvature_jump", number(r.info.max_curvature_jump)},
                       {"status", std::string(to_string(r.summary.status))},
                       {"message", r.summary.message.empty() ? Json(nullptr) : Json(r.summary.message)}};
+}
+
+}  // namespace
+
+void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common) {
+  add_export_with(report, curve != nullptr, common,
+                  [&](const std::string& path, const PreparedExport& p) { return export_curve(*curve, path, p); });
+}
+
+void add_export(Json& report, const QuadraticArc* arc, const CommonArgs& common) {
+  add_export_with(report, arc != nullptr, common, [&](const std::string& path, const PreparedExport& p) {
+    return export_curve(arc->curve, arc->s0, arc->s1, path, p);
+  });
 }
 
 }  // namespace lac::cli

@@ -3,6 +3,7 @@
 // certified deviation bound (export/to_bspline.hpp), written in the format of FILE's extension.
 #include "cli/options.hpp"
 #include "cli/report.hpp"
+#include "lac/curves/quadratic/quadratic_curve.hpp"
 
 namespace lac::cli {
 
@@ -14,5 +15,13 @@ namespace lac::cli {
 /// gives "export": null and writes nothing. InputError "export" for an unknown extension, a file
 /// that cannot be written, or STEP/IGES in a build without OpenCASCADE.
 void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common);
+
+/// The arc [s0, s1] (s0 < s1) of a quadratic LA curve (lac quadratic).
+struct QuadraticArc {
+  const QuadraticLaCurve& curve;
+  double s0, s1;
+};
+/// The same for a quadratic arc (null: not usable).
+void add_export(Json& report, const QuadraticArc* arc, const CommonArgs& common);
 
 }  // namespace lac::cli

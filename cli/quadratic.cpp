@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cli/batch.hpp"
+#include "cli/export.hpp"
 #include "cli/options.hpp"
 #include "cli/quadrature_args.hpp"
 #include "io/timing.hpp"
@@ -83,6 +84,9 @@ Report solve(const QuadraticArgs& a) {
     for (const PositionResult& q : pts) arr.push_back(planar_point(q));
     j["points"] = std::move(arr);
   }
+  // --export: the drawn arc, oriented by increasing s (the same points when --s-from > --s-to).
+  const QuadraticArc arc{curve, std::min(s0, s1), std::max(s0, s1)};
+  add_export(j, failed == nullptr && s0 != s1 ? &arc : nullptr, a.common);
   return r;
 }
 
@@ -108,6 +112,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--through-inflection", a->through_inflection, "Continue past kappa = 0 point-symmetrically (signed kappa)");
   add_common_options(*sub, a->common, true);
+  add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);
 }
 

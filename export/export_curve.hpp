@@ -1,6 +1,7 @@
 #pragma once
 // One export request, one file: the format from the path's extension, the degree (5, or 3 for
-// .svg), the check that this build writes STEP and IGES, to_bspline and the writer. The CLI's
+// .svg), the check that this build writes STEP and IGES, to_bspline and the writer (a PlanarCurve,
+// or an arc of a quadratic LA curve). The CLI's
 // --export and Python's lac.export_curve both call it. Inline on purpose: whether STEP and IGES
 // are written is decided by the program that includes it (LAC_WITH_OCCT comes with lac::export).
 //
@@ -73,11 +74,9 @@ inline PreparedExport prepare_export(const ExportRequest& request, const ExportN
   return p;
 }
 
-/// The certified B-spline of `curve` (to_bspline), written to `path` in the prepared format when
-/// it is usable (nothing is written otherwise). InputError naming "export" when the file cannot
-/// be written.
-inline ExportResult export_curve(const PlanarCurve& curve, const std::string& path, const PreparedExport& p) {
-  ExportResult r = to_bspline(curve, p.options);
+/// Writes a certified B-spline to `path` in the prepared format when it is usable (nothing is
+/// written otherwise); returns it. InputError naming "export" when the file cannot be written.
+inline ExportResult write_export(ExportResult r, const std::string& path, const PreparedExport& p) {
   if (r.usable()) {
 #ifdef LAC_WITH_OCCT
     write_any(path, p.format, r.curve, p.svg);
@@ -86,6 +85,19 @@ inline ExportResult export_curve(const PlanarCurve& curve, const std::string& pa
 #endif
   }
   return r;
+}
+
+/// The certified B-spline of `curve` (to_bspline), written to `path` in the prepared format when
+/// it is usable (nothing is written otherwise). InputError naming "export" when the file cannot
+/// be written.
+inline ExportResult export_curve(const PlanarCurve& curve, const std::string& path, const PreparedExport& p) {
+  return write_export(to_bspline(curve, p.options), path, p);
+}
+
+/// The same for the arc [s0, s1] of a quadratic LA curve (to_bspline's quadratic overload).
+inline ExportResult export_curve(const QuadraticLaCurve& curve, double s0, double s1, const std::string& path,
+                                 const PreparedExport& p) {
+  return write_export(to_bspline(curve, s0, s1, p.options), path, p);
 }
 
 }  // namespace lac

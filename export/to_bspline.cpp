@@ -9,6 +9,7 @@
 #include <map>
 
 #include "lac/common/error.hpp"
+#include "lac/export/detail/spans.hpp"
 #include "lac/export/write.hpp"
 #include "lac/integrators/quadrature.hpp"
 
@@ -88,18 +89,11 @@ struct SpanBound {
   std::array<double, 7> by_order{};  // the bound of each order of that degree (0: unused)
 };
 
-/// The interpolation bound on the part [u0, u1] of `seg` (no inflection inside) of the Hermite
-/// interpolant of `degree`; for degree 5 where κ' is unbounded (α < −1 at an inflection), the cubic's.
-SpanBound span_bound(const LaSegment& seg, double u0, double u1, int degree) {
+/// The interpolation bound of a span of length h on which k_j ≥ |κ^(j)| (j = 0 … 4), of the
+/// Hermite interpolant of `degree`; for degree 5 where a derivative it needs is unbounded (e.g.
+/// κ' at an inflection of an LA segment with α < −1), the cubic's.
+SpanBound peano_bound(const std::array<double, 5>& k, double h, int degree) {
   static const Majorants majorants;
-  const LaLaw& law = seg.law();
-  const double l = seg.scale(), m = std::abs(seg.normalized().slope());
-  const double q0 = seg.q_at(u0), q1 = seg.q_at(u1);
-  const double h = l * (u1 - u0);
-  std::array<double, 5> k{};
-  k[0] = (1 + kSlack) * std::max(std::abs(law.kappa_of_q(q0)), std::abs(law.kappa_of_q(q1))) / l;
-  for (int j = 1; j < 5; ++j)  // κ^(j) = K^(j)(q) (dq/du)^j / ℓ^(j+1)
-    k[j] = (1 + kSlack) * std::max(abs_dK(law, q0, j), abs_dK(law, q1, j)) * std::pow(m, j) / std::pow(l, j + 1);
   SpanBound best;
   for (int d : {degree, 3}) {
     const auto& C = d == 3 ? kCubic : kQuintic;
@@ -115,9 +109,15 @@ SpanBound span_bound(const LaSegment& seg, double u0, double u1, int degree) {
   return best;
 }
 
-/// Splits [u0, u1] until every span's bound is at most `target`, appending the spans' ends after
-/// u0 and their bounds. False when the cap on spans is reached.
-bool split(const LaSegment& seg, double u0, double u1, int degree, double target, long cap,
+SpanBound span_bound(const detail::SpanSource& src, double w0, double w1, int degree) {
+  std::array<double, 5> k = src.derivative_bounds(w0, w1);
+  for (double& x : k) x *= 1 + kSlack;
+  return peano_bound(k, src.span_length(w0, w1), degree);
+}
+
+/// Splits [u0, u1] (a source's parameter) until every span's bound is at most `target`, appending
+/// the spans' ends after u0 and their bounds. False when the cap on spans is reached.
+bool split(const detail::SpanSource& seg, double u0, double u1, int degree, double target, long cap,
            std::vector<double>& ends, std::vector<SpanBound>& bounds) {
   const SpanBound b = span_bound(seg, u0, u1, degree);
   if (b.value <= target || !(u1 - u0 > 4 * DBL_EPSILON * std::max(std::abs(u0), std::abs(u1)))) {
@@ -176,8 +176,10 @@ double bezier_curvature(const Piece& p, double t) {
 
 }  // namespace
 
-bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump,
-                        long* constant_segments) {
+namespace detail {
+
+bool curvature_monotone(const BSpline& b, const std::vector<MonotoneStretch>& stretches, double length,
+                        long* monotone_segments, double* max_jump, long* constant_segments) {
   const auto pieces = bezier_pieces(b);
   std::vector<double> knots;
   std::vector<int> mult;
@@ -186,23 +188,19 @@ bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monoto
   long good = 0, constant = 0;
   size_t j = 0;
   double previous_end_kappa = NAN;
-  for (size_t k = 0; k < curve.segments().size(); ++k) {
-    const LaSegment& seg = curve.segments()[k];
+  for (const MonotoneStretch& st : stretches) {
     // A curvature constant to 1e-9 (an arc, up to the construction's rounding): no direction to
-    // keep; a polynomial's curvature cannot be constant, so such a segment is not checked.
-    const double kscale = std::max(std::abs(seg.kappa_start()), std::abs(seg.kappa_end())) + 1.0 / curve.length();
-    const double dk = seg.kappa_end() - seg.kappa_start();
+    // keep; a polynomial's curvature cannot be constant, so such a stretch is not checked.
+    const double kscale = std::max(std::abs(st.kappa_start), std::abs(st.kappa_end)) + 1.0 / length;
+    const double dk = st.kappa_end - st.kappa_start;
     const double dir = dk > 1e-9 * kscale ? 1.0 : dk < -1e-9 * kscale ? -1.0 : 0.0;
     if (dir == 0) ++constant;
-    const double end = curve.segment_start(k + 1);
-    // The LA curve's own curvature jump at the joint before this segment (0 for G2).
-    const double la_jump = k == 0 ? 0.0 : seg.kappa_start() - curve.segments()[k - 1].kappa_end();
     std::vector<double> values;
-    double scale = std::max(std::abs(seg.kappa_start()), std::abs(seg.kappa_end()));
-    for (bool first_span = true; j < pieces.size() && j + 1 < knots.size() && knots[j + 1] <= end; ++j) {
+    double scale = std::max(std::abs(st.kappa_start), std::abs(st.kappa_end));
+    for (bool first_span = true; j < pieces.size() && j + 1 < knots.size() && knots[j + 1] <= st.end; ++j) {
       const double first = bezier_curvature(pieces[j], 0.0);
       if (std::isfinite(previous_end_kappa))
-        jump = std::max(jump, std::abs(first - previous_end_kappa - (first_span ? la_jump : 0.0)));
+        jump = std::max(jump, std::abs(first - previous_end_kappa - (first_span ? st.jump_before : 0.0)));
       first_span = false;
       for (int i = 0; i <= 32; ++i) values.push_back(bezier_curvature(pieces[j], i / 32.0));
       previous_end_kappa = values.back();
@@ -219,26 +217,20 @@ bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monoto
   if (monotone_segments) *monotone_segments = good;
   if (constant_segments) *constant_segments = constant;
   if (max_jump) *max_jump = jump;
-  return good + constant == static_cast<long>(curve.segments().size());
+  return good + constant == static_cast<long>(stretches.size());
 }
 
-ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) {
+ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
+                               double extent, const ExportOptions& options, const CurvatureCheck& check) {
   const auto t_start = std::chrono::steady_clock::now();
-  if (curve.segments().empty()) throw_input_error(kWho, "curve", "an empty curve has nothing to export");
-  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-    throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
-  if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
-  if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
   const int p = options.degree;
   ExportResult r;
-  const double length = curve.length();
+  const double length = starts.back();
   const double tol = options.tolerance > 0 ? options.tolerance : kDefaultExportTolerance * length;
   r.info.tolerance = tol;
   r.summary.accept = tol / length;
   // 9/10 of the tolerance for the interpolation, the rest for positions and rounding; no finer
   // than the rounding of the coordinates (a tolerance below it ends inaccurate without a flood of spans).
-  double extent = length;
-  for (const LaSegment& seg : curve.segments()) extent = std::max(extent, std::abs(seg.start()) + length);
   const double target = std::max(0.9 * tol, 64 * DBL_EPSILON * extent);
   auto fail = [&](Status status, std::string message) {
     r.conclude(status, std::move(message));
@@ -253,70 +245,79 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
   std::vector<double> knots{0.0};
   double interpolation = 0, positions = 0, deviation = 0;
   bool all_g2 = p == 5;
-  const auto& segs = curve.segments();
-  for (size_t k = 0; k < segs.size(); ++k) {
-    const LaSegment& seg = segs[k];
+  // The first part's first point (the later parts start where the previous one ended, below).
+  SpanEndPosition first = parts.front()->position(parts.front()->w_begin());
+  r.summary.evaluations += first.evaluations;
+  if (!usable(first.status) || !std::isfinite(first.error))
+    return fail(Status::numerical_failure, "the position at s = 0 failed: " + first.message);
+  std::complex<double> p_first = first.point;
+  double err_first = first.error;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const SpanSource& seg = *parts[k];
     std::vector<double> ends;
     std::vector<SpanBound> bounds;
     const long cap = options.max_spans - static_cast<long>(pieces.size());
-    const auto infl = seg.inflection_u();
-    bool within_cap;
-    if (infl && *infl > seg.ua() && *infl < seg.ub()) {
-      within_cap = split(seg, seg.ua(), *infl, p, target, cap, ends, bounds) &&
-                   split(seg, *infl, seg.ub(), p, target, cap, ends, bounds);
-    } else {
-      within_cap = split(seg, seg.ua(), seg.ub(), p, target, cap, ends, bounds);
+    bool within_cap = true;
+    double w_from = seg.w_begin();
+    for (double w_break : seg.breaks()) {
+      within_cap = within_cap && split(seg, w_from, w_break, p, target, cap, ends, bounds);
+      w_from = w_break;
     }
+    within_cap = within_cap && split(seg, w_from, seg.w_end(), p, target, cap, ends, bounds);
     if (!within_cap)
       return fail(Status::max_iterations, "more than max_spans = " + std::to_string(options.max_spans) +
                                               " spans needed for tolerance " + format_number(tol));
-    const double s_base = curve.segment_start(k);
-    // The segment's first point, tangent and c'' = iκ e^{iθ}: its own start (exact), closed forms
-    // (the previous segment's last span ended on the same values).
-    std::complex<double> p0 = seg.start();
-    double err0 = 0;
-    std::complex<double> t0 = std::polar(1.0, seg.theta_start());
-    std::complex<double> n0 = std::complex<double>(0, seg.kappa_start()) * t0;
-    double u_prev = seg.ua();
+    const double s_base = starts[k];
+    const double part_length = starts[k + 1] - starts[k];
+    // The part's first point, tangent and c'' = iκ e^{iθ}: the first part's start (a segment's own
+    // start, exact, or a quadrature), else the previous part's last span's end (which the previous
+    // part took from this one's start).
+    std::complex<double> p0 = p_first;
+    double err0 = err_first;
+    std::complex<double> t0 = std::polar(1.0, seg.theta(seg.w_begin()));
+    std::complex<double> n0 = std::complex<double>(0, seg.kappa(seg.w_begin())) * t0;
+    double u_prev = seg.w_begin();
     for (size_t i = 0; i < ends.size(); ++i) {
       const double u1 = ends[i];
       const bool last = i + 1 == ends.size();
-      const double s1 = last ? seg.length() : std::min(seg.length(), seg.scale() * (u1 - seg.ua()));
-      const double h = seg.scale() * (u1 - u_prev);
-      // Two independent quadratures (adaptive Gauss–Kronrod, and the default Gauss–Legendre): the
-      // position is Gauss–Kronrod's, its error the larger of its estimate and the two's difference,
-      // so that one method's estimate missing its error (e.g. κ ∝ |q|^(−1/α) with α near 0 steep
-      // at an inflection) shows up as a disagreement.
-      const PositionResult pk = position_at(seg, s1, GaussKronrod{});
-      const PositionResult pr = position_at(seg, s1);
-      r.summary.evaluations += pk.evaluations + pr.evaluations;
-      for (const PositionResult* x : {&pk, &pr})
-        if (!usable(x->status) || !std::isfinite(x->error_estimate))
-          return fail(Status::numerical_failure,
-                      "the position at s = " + format_number(s_base + s1) + " failed: " + x->message);
-      std::complex<double> p1 = pk.point.position;
-      double err1 = std::max({pk.error_estimate, pr.error_estimate, std::abs(pk.point.position - pr.point.position)});
-      std::complex<double> t1 = std::polar(1.0, seg.theta_at(s1));
-      std::complex<double> n1 = std::complex<double>(0, seg.kappa_at(s1)) * t1;
+      const double s1 = last ? part_length : std::min(part_length, seg.arc(u1));
+      const double h = seg.span_length(u_prev, u1);
+      const SpanEndPosition pk = seg.position(u1);
+      r.summary.evaluations += pk.evaluations;
+      if (!usable(pk.status) || !std::isfinite(pk.error))
+        return fail(pk.status == Status::max_iterations ? Status::max_iterations : Status::numerical_failure,
+                    "the position at s = " + format_number(s_base + s1) + " failed: " + pk.message);
+      std::complex<double> p1 = pk.point;
+      double err1 = pk.error;
+      std::complex<double> t1 = std::polar(1.0, seg.theta(u1));
+      std::complex<double> n1 = std::complex<double>(0, seg.kappa(u1)) * t1;
       const int degree = bounds[i].degree;
       const SpanBound next_bound = i + 1 < bounds.size() ? bounds[i + 1] : SpanBound{};
       int cont = degree == 5 && next_bound.degree == 5 ? 2 : 1;
       double moved_t = 0, moved_n = 0;  // how far the end's tangent and c'' are moved (joint data)
-      if (last && k + 1 < segs.size()) {
-        // The chain's next segment starts at its own start point and θ: the B-spline uses those,
-        // and its κ when the joint is G2 (curvature gap ≤ 1e-6 of the curvatures' scale).
-        const LaSegment& next = segs[k + 1];
-        const std::complex<double> p_next = next.start(), t_next = std::polar(1.0, next.theta_start());
-        err1 += std::abs(p_next - p1);
+      if (last && k + 1 < parts.size()) {
+        // The next part starts at its own start point and θ: the B-spline uses those, and its κ
+        // when the joint is G2 (curvature gap ≤ 1e-6 of the curvatures' scale).
+        const SpanSource& next = *parts[k + 1];
+        const SpanEndPosition next_start = next.position(next.w_begin());
+        r.summary.evaluations += next_start.evaluations;
+        if (!usable(next_start.status) || !std::isfinite(next_start.error))
+          return fail(Status::numerical_failure,
+                      "the position at s = " + format_number(starts[k + 1]) + " failed: " + next_start.message);
+        const std::complex<double> p_next = next_start.point, t_next = std::polar(1.0, next.theta(next.w_begin()));
+        err1 += std::abs(p_next - p1) + next_start.error;
         moved_t = std::abs(t_next - t1);
         p1 = p_next;
         t1 = t_next;
-        const double gap = std::abs(next.kappa_start() - seg.kappa_end());
-        const bool g2 = gap <= 1e-6 * (std::abs(next.kappa_start()) + std::abs(seg.kappa_end()) + 1.0 / length);
+        p_first = p1;
+        err_first = err1;
+        const double kappa_next = next.kappa(next.w_begin()), kappa_end = seg.kappa(seg.w_end());
+        const double gap = std::abs(kappa_next - kappa_end);
+        const bool g2 = gap <= 1e-6 * (std::abs(kappa_next) + std::abs(kappa_end) + 1.0 / length);
         const std::complex<double> n_own = n1;
-        n1 = std::complex<double>(0, g2 ? next.kappa_start() : seg.kappa_end()) * t1;
+        n1 = std::complex<double>(0, g2 ? kappa_next : kappa_end) * t1;
         moved_n = std::abs(n1 - n_own);
-        cont = degree == 5 && g2 ? 2 : 1;  // the next segment's first span is checked below
+        cont = degree == 5 && g2 ? 2 : 1;  // the next part's first span is checked below
         if (!g2) all_g2 = false;
       }
       Piece piece;
@@ -335,11 +336,10 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
       if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
       pieces.push_back(std::move(piece));
       junction.push_back(cont);
-      knots.push_back(last ? curve.segment_start(k + 1) : s_base + s1);
+      knots.push_back(last ? starts[k + 1] : s_base + s1);
       // Rounding: the control points (ulps of their size) and the closed-form θ (ulps of |θ|).
       const double size = std::max(std::abs(p0), std::abs(p1)) + h;
-      const double rounding = 64 * DBL_EPSILON * size +
-                              h * 4 * DBL_EPSILON * (1 + std::max(std::abs(seg.theta_start()), std::abs(seg.theta_end())));
+      const double rounding = 64 * DBL_EPSILON * size + h * 4 * DBL_EPSILON * (1 + seg.theta_scale());
       const double interp = bounds[i].value;
       const double pos = std::max(err0, err1) + moved + rounding;
       interpolation = std::max(interpolation, interp);
@@ -393,8 +393,7 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
   r.info.interpolation = interpolation;
   r.info.positions = positions;
   r.info.max_deviation = deviation;
-  r.info.curvature_monotone = curvature_monotone(b, curve, &r.info.monotone_segments, &r.info.max_curvature_jump,
-                                                 &r.info.constant_curvature_segments);
+  if (check) check(b, r.info);
   r.summary.error = deviation / length;
   r.summary.error_estimate = deviation;
   r.summary.iterations = static_cast<int>(std::min<long>(static_cast<long>(n), std::numeric_limits<int>::max()));
@@ -406,6 +405,105 @@ ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) 
                                        format_number(tol));
   }
   return r;
+}
+
+}  // namespace detail
+
+namespace {
+
+/// An LA segment in its parameter u (u = ua + s/ℓ). On [u0, u1] without an inflection each
+/// |κ^(j)| is a monotone function of s (a power of the LA law's t), so its largest value is at an end.
+class SegmentSource final : public detail::SpanSource {
+ public:
+  explicit SegmentSource(const LaSegment& seg) : seg_(seg) {}
+  double w_begin() const override { return seg_.ua(); }
+  double w_end() const override { return seg_.ub(); }
+  std::vector<double> breaks() const override {
+    const auto infl = seg_.inflection_u();
+    if (infl && *infl > seg_.ua() && *infl < seg_.ub()) return {*infl};
+    return {};
+  }
+  double arc(double u) const override { return u == seg_.ub() ? seg_.length() : seg_.scale() * (u - seg_.ua()); }
+  double span_length(double u0, double u1) const override { return seg_.scale() * (u1 - u0); }
+  std::array<double, 5> derivative_bounds(double u0, double u1) const override {
+    const LaLaw& law = seg_.law();
+    const double l = seg_.scale(), m = std::abs(seg_.normalized().slope());
+    const double q0 = seg_.q_at(u0), q1 = seg_.q_at(u1);
+    std::array<double, 5> k{};
+    k[0] = std::max(std::abs(law.kappa_of_q(q0)), std::abs(law.kappa_of_q(q1))) / l;
+    for (int j = 1; j < 5; ++j)  // κ^(j) = K^(j)(q) (dq/du)^j / ℓ^(j+1)
+      k[j] = std::max(abs_dK(law, q0, j), abs_dK(law, q1, j)) * std::pow(m, j) / std::pow(l, j + 1);
+    return k;
+  }
+  double theta(double u) const override { return seg_.theta_at(local_s(u)); }
+  double kappa(double u) const override { return seg_.kappa_at(local_s(u)); }
+  detail::SpanEndPosition position(double u) const override {
+    if (u == seg_.ua()) return {seg_.start(), 0.0, 0, Status::ok, ""};  // exact
+    // Two independent quadratures (adaptive Gauss–Kronrod, and the default Gauss–Legendre): the
+    // position is Gauss–Kronrod's, its error the larger of its estimate and the two's difference,
+    // so that one method's estimate missing its error (e.g. κ ∝ |q|^(−1/α) with α near 0 steep
+    // at an inflection) shows up as a disagreement.
+    const double s = local_s(u);
+    const PositionResult pk = position_at(seg_, s, GaussKronrod{});
+    const PositionResult pr = position_at(seg_, s);
+    detail::SpanEndPosition e{pk.point.position,
+                              std::max({pk.error_estimate, pr.error_estimate, std::abs(pk.point.position - pr.point.position)}),
+                              pk.evaluations + pr.evaluations, Status::ok, ""};
+    for (const PositionResult* x : {&pk, &pr})
+      if (!usable(x->status)) e.status = x->status, e.message = x->message;
+    return e;
+  }
+  double theta_scale() const override { return std::max(std::abs(seg_.theta_start()), std::abs(seg_.theta_end())); }
+
+ private:
+  double local_s(double u) const { return u == seg_.ub() ? seg_.length() : std::min(seg_.length(), arc(u)); }
+  const LaSegment& seg_;
+};
+
+std::vector<detail::MonotoneStretch> stretches_of(const PlanarCurve& curve) {
+  std::vector<detail::MonotoneStretch> out;
+  const auto& segs = curve.segments();
+  for (size_t k = 0; k < segs.size(); ++k)
+    out.push_back({curve.segment_start(k + 1), segs[k].kappa_start(), segs[k].kappa_end(),
+                   k == 0 ? 0.0 : segs[k].kappa_start() - segs[k - 1].kappa_end()});
+  return out;
+}
+
+}  // namespace
+
+void detail::validate_export_options(const ExportOptions& options) {
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
+  if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
+  if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
+}
+
+bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump,
+                        long* constant_segments) {
+  return detail::curvature_monotone(b, stretches_of(curve), curve.length(), monotone_segments, max_jump,
+                                    constant_segments);
+}
+
+ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options) {
+  if (curve.segments().empty()) throw_input_error(kWho, "curve", "an empty curve has nothing to export");
+  detail::validate_export_options(options);
+  const double length = curve.length();
+  double extent = length;
+  for (const LaSegment& seg : curve.segments()) extent = std::max(extent, std::abs(seg.start()) + length);
+  std::vector<SegmentSource> sources;
+  sources.reserve(curve.segments().size());
+  std::vector<const detail::SpanSource*> parts;
+  std::vector<double> starts;
+  for (size_t k = 0; k < curve.segments().size(); ++k) {
+    sources.emplace_back(curve.segments()[k]);
+    starts.push_back(curve.segment_start(k));
+  }
+  for (const SegmentSource& s : sources) parts.push_back(&s);
+  starts.push_back(curve.segment_start(curve.segments().size()));
+  return detail::certified_bspline(parts, starts, extent, options, [&](const BSpline& b, ExportInfo& info) {
+    info.curvature_monotone = curvature_monotone(b, curve, &info.monotone_segments, &info.max_curvature_jump,
+                                                 &info.constant_curvature_segments);
+  });
 }
 
 }  // namespace lac

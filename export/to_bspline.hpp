@@ -22,12 +22,16 @@
 // gaps (position, tangent, curvature) and rounding. The B-spline is within max_deviation of the
 // curve at the same arc length, hence in Hausdorff distance.
 //
+// An arc of a quadratic LA curve (003) is exported by the same spans (export/detail/spans.hpp);
+// its |κ^(j)| come from closed forms in u = log κ bounded on each span (to_bspline_quadratic.cpp).
+//
 //   auto r = lac::to_bspline(curve, {.tolerance = 1e-6});
 //   if (r.usable()) lac::write_file("curve.dxf", lac::ExportFormat::dxf, r.curve);  // export/write.hpp
 #include <string>
 
 #include "lac/common/summary.hpp"
 #include "lac/curves/planar/planar_curve.hpp"
+#include "lac/curves/quadratic/quadratic_curve.hpp"
 #include "lac/export/bspline.hpp"
 
 namespace lac {
@@ -70,6 +74,13 @@ using ExportResult = Result<BSpline, ExportInfo>;
 /// max_spans, numerical_failure if a position failed. summary.error = max_deviation / length and
 /// summary.accept = tolerance / length.
 ExportResult to_bspline(const PlanarCurve& curve, const ExportOptions& options = {});
+
+/// The arc [s0, s1] of a quadratic LA curve (both in s_domain(), InputError "s0" / "s1" otherwise
+/// and unless s0 < s1; `lac quadratic` draws curve.default_range()) as the certified B-spline, as
+/// for a PlanarCurve: one smooth part, split at the inflection when the arc passes it
+/// (through_inflection); its end positions by quadrature from s = 0 (the standard form's origin).
+/// The curvature check has one segment (κ decreases along the whole curve).
+ExportResult to_bspline(const QuadraticLaCurve& curve, double s0, double s1, const ExportOptions& options = {});
 
 /// The curvature check of ExportInfo on a B-spline made by to_bspline, on its Bézier pieces
 /// (export/write.hpp bezier_pieces): segment k's spans are those between its joints' knots.

@@ -1,5 +1,5 @@
-// CAD export (export/, docs/export.md) for lac.Curve: the certified B-spline of a planar curve and
-// its files (.dxf, .svg; .step and .iges when the module is built with OpenCASCADE).
+// CAD export (export/, docs/export.md) for lac.Curve and lac.QuadraticCurve: the certified B-spline
+// of a planar curve or of a quadratic LA curve's arc and its files (.dxf, .svg; .step and .iges when the module is built with OpenCASCADE).
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
@@ -73,6 +73,49 @@ void bind_export(py::module_& m) {
       "Writes the certified B-spline of the curve to `path`, the format from its extension (.step/.stp, "
       ".iges/.igs, .dxf, .svg); returns to_bspline's dict plus file (None when the bound exceeds the "
       "tolerance: nothing is written) and format.");
+
+  // A quadratic LA curve (lac.QuadraticCurve): the arc [s_from, s_to], by default its drawing range.
+  auto arc = [](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to) {
+    const lac::Interval r = c.default_range();
+    return std::pair{s_from.value_or(r.lo), s_to.value_or(r.hi)};
+  };
+  m.def(
+      "to_bspline",
+      [arc](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to, double tolerance,
+            int degree, long max_spans) {
+        const auto [s0, s1] = arc(c, s_from, s_to);
+        lac::ExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::to_bspline(c, s0, s1, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
+        }
+        return bspline_dict(r);
+      },
+      py::arg("curve"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
+      py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
+      "The arc [s_from, s_to] of a quadratic LA curve (default: its default_range, as `lac quadratic` draws) "
+      "as a certified B-spline, the same dict; its parameter is the arc length from s_from.");
+  m.def(
+      "export_curve",
+      [arc](const lac::QuadraticLaCurve& c, const std::string& path, std::optional<double> s_from,
+            std::optional<double> s_to, double tolerance, std::optional<int> degree) {
+        const lac::PreparedExport prepared = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree},
+                                                                 {"export_curve", "path", "tolerance", "degree"});
+        const auto [s0, s1] = arc(c, s_from, s_to);
+        lac::ExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::export_curve(c, s0, s1, path, prepared);
+        }
+        py::dict d = bspline_dict(r);
+        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
+        d["format"] = lac::to_string(prepared.format);
+        return d;
+      },
+      py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
+      py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      "Writes the certified B-spline of the arc [s_from, s_to] of a quadratic LA curve (default: its "
+      "default_range) to `path`; the same dict as for a planar curve.");
 }
 
 }  // namespace lacpy

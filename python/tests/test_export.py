@@ -80,3 +80,35 @@ def test_step_and_iges_are_written_when_built_with_opencascade(curve, tmp_path):
             continue
         assert r["file"] == str(path) and path.stat().st_size > 0
     assert "B_SPLINE_CURVE_WITH_KNOTS" in (tmp_path / "curve.step").read_text() or not (tmp_path / "curve.step").exists()
+
+
+@pytest.mark.parametrize("degree", [3, 5])
+def test_quadratic_curve_within_its_certified_bound(degree):
+    """lac.QuadraticCurve: the drawn arc (default_range) against the curve's own positions."""
+    q = lac.QuadraticCurve(-1.0, -0.3, 1.0)
+    s0, s1 = q.default_range
+    b = lac.to_bspline(q, tolerance=1e-7, degree=degree)
+    assert b["usable"] and b["status"] == "ok", b["message"]
+    assert 0 < b["max_deviation"] <= 1e-7
+    knots, cp = b["knots"], b["control_points"]
+    assert knots[-1] == pytest.approx(s1 - s0, rel=1e-15)
+    s = np.linspace(s0, s1, 1001)
+    pts = q.eval(s, integrator="gauss-kronrod")
+    got = np.array([de_boor(knots, cp, degree, t) for t in s - s0])
+    dist = np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y)
+    assert dist.max() <= b["max_deviation"] + pts.error_estimate.max()
+    # An explicit arc, and the file.
+    part = lac.to_bspline(q, s_from=-0.2, s_to=0.5, tolerance=1e-8)
+    assert part["status"] == "ok" and part["knots"][-1] == pytest.approx(0.7, rel=1e-15)
+    with pytest.raises(lac.InputError):
+        lac.to_bspline(q, s_from=0.5, s_to=0.5)
+
+
+def test_quadratic_export_dxf_reads_back(tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    q = lac.QuadraticCurve(2.5, 0.3, 0.7)
+    path = tmp_path / "quadratic.dxf"
+    r = lac.export_curve(q, str(path))
+    assert r["file"] == str(path) and r["status"] == "ok", r["message"]
+    splines = list(ezdxf.readfile(str(path)).modelspace().query("SPLINE"))
+    assert len(splines) == 1 and len(list(splines[0].control_points)) == len(r["control_points"])
