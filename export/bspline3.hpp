@@ -12,9 +12,9 @@ namespace lac {
 
 struct BSpline3 {
   int degree = 3;
-  std::vector<double> knots;                   ///< non-decreasing, control_points.size() + degree + 1 values
+  std::vector<double> knots;                    ///< non-decreasing, control_points.size() + degree + 1 values
   std::vector<Eigen::Vector3d> control_points;  ///< (x, y, z)
-  std::vector<double> weights;                 ///< empty: polynomial (non-rational)
+  std::vector<double> weights;                  ///< empty: polynomial (non-rational)
 
   bool rational() const { return !weights.empty(); }
   double t_min() const { return knots.at(degree); }

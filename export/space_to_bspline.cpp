@@ -149,8 +149,8 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
         const FrenetResult fr = integrate_frenet(law, *f, s_prev, s1, *o);
         r.summary.evaluations += fr.evaluations;
         if (fr.status != Status::ok || !fr.frame.p.allFinite())
-          return fail(Status::numerical_failure, "the Frenet integration of piece " + std::to_string(k) + " to s = " +
-                                                     format_number(s1) + " failed: " + fr.message);
+          return fail(Status::numerical_failure, "the Frenet integration of piece " + std::to_string(k) +
+                                                     " to s = " + format_number(s1) + " failed: " + fr.message);
         *f = fr.frame;
       }
       const double kappa1 = law.kappa(s1);
@@ -182,8 +182,12 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
       Piece piece;
       double moved = 0;  // displacement of the B-spline by the end data's errors (header comment)
       if (degree == 5) {
-        piece = {p0, p0 + (h / 5) * t0, p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
-                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1, p1 - (h / 5) * t1, p1};
+        piece = {p0,
+                 p0 + (h / 5) * t0,
+                 p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
+                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1,
+                 p1 - (h / 5) * t1,
+                 p1};
         moved = std::max(dp0 + 2 * h / 5 * dt0 + h * h / 20 * dn0, dp1 + 2 * h / 5 * dt1 + h * h / 20 * dn1);
       } else {
         piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
@@ -226,8 +230,8 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   if (deviation <= tol) {
     r.conclude(Status::ok, "");
   } else {
-    r.conclude(Status::inaccurate, "deviation bound " + format_number(deviation) + " exceeds the tolerance " +
-                                       format_number(tol));
+    r.conclude(Status::inaccurate,
+               "deviation bound " + format_number(deviation) + " exceeds the tolerance " + format_number(tol));
   }
   return r;
 }

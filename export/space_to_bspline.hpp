@@ -24,10 +24,11 @@
 // (curves/space/frenet.hpp), which has no proven error bound: they are integrated twice, by the
 // order-6 Magnus stepper at rtol 1e-13 (the values used) and by Dormand–Prince 5(4) at rtol 1e-10,
 // and the error of the former is taken as the largest difference of the two so far along the
-// piece (an estimate: the coarser run's error, with tolerances 10³ apart far above the finer one's; checked against
-// integration at tight tolerance in tests/export/space_export_test.cpp). Added: the joint gaps
-// to the next piece's start frame and rounding; a displacement δ of the end data moves the
-// B-spline by at most δP + (2h/5)δT + (h²/20)|κ δN| (quintic; partition of unity).
+// piece (an estimate: the coarser run's error, with tolerances 10³ apart far above the finer
+// one's; checked against integration at tight tolerance in tests/export/space_export_test.cpp).
+// Added: the joint gaps to the next piece's start frame and rounding; a displacement δ of the
+// end data moves the B-spline by at most δP + (2h/5)δT + (h²/20)|κ δN| (quintic; partition of
+// unity).
 //
 //   auto r = lac::to_bspline(space_curve, {.tolerance = 1e-6});
 //   if (r.usable()) lac::write_file("curve.dxf", lac::ExportFormat::dxf, r.curve);  // export/write3.hpp

@@ -54,7 +54,8 @@ void write_dxf(std::ostream& out, const BSpline3& b) {
 
 void write_file(const std::string& path, ExportFormat format, const BSpline3& b) {
   if (format == ExportFormat::svg)
-    throw_input_error("write_file", "export", "'" + path + "': .svg holds planar curves; a space curve goes to .dxf, .step or .iges");
+    throw_input_error("write_file", "export",
+                      "'" + path + "': .svg holds planar curves; a space curve goes to .dxf, .step or .iges");
   if (format == ExportFormat::step || format == ExportFormat::iges)
     throw_input_error("write_file", "export",
                       "'" + path + "': " + to_string(format) +

@@ -21,9 +21,10 @@ namespace lac::detail {
 // (t³(1−t)³/720), 1/10240 at m = 5, 0.0061849 and 0.00067702 at m = 3, 4; no m = 2 (the
 // interpolant takes f''). For a vector-valued f the same bounds hold with |f^(m)| the Euclidean
 // norm (the kernel is scalar: |∫ K f^(m)| ≤ ∫ |K| |f^(m)|).
-inline constexpr std::array<double, 7> kHermiteCubic{0, 0, 1.0 / 16.0, 1.0 / 96.0 * (1 + 1e-9),
-                                                     1.0 / 384.0 * (1 + 1e-9), 0, 0};
-inline constexpr std::array<double, 7> kHermiteQuintic{0, 0, 0, 0.00619, 0.000678, 0.0000977, 1.0 / 46080.0 * (1 + 1e-9)};
+inline constexpr std::array<double, 7> kHermiteCubic{
+    0, 0, 1.0 / 16.0, 1.0 / 96.0 * (1 + 1e-9), 1.0 / 384.0 * (1 + 1e-9), 0, 0};
+inline constexpr std::array<double, 7> kHermiteQuintic{
+    0, 0, 0, 0.00619, 0.000678, 0.0000977, 1.0 / 46080.0 * (1 + 1e-9)};
 /// Relative slack on derivative bounds evaluated in floating point at the span ends.
 inline constexpr double kDerivativeSlack = 1e-9;
 

@@ -40,10 +40,10 @@ TEST(CliSpaceExport, G1AndCompoundEveryFormat) {
       const auto& e = j["export"];
       std::vector<std::string> keys;
       for (const auto& [k, v] : e.items()) keys.push_back(k);
-      EXPECT_EQ(keys, (std::vector<std::string>{"file", "format", "degree", "control_points", "max_deviation",
-                                                "curvature_monotone", "tolerance", "spans", "continuity",
-                                                "monotone_segments", "constant_curvature_segments",
-                                                "max_curvature_jump", "status", "message"}));
+      EXPECT_EQ(keys,
+                (std::vector<std::string>{"file", "format", "degree", "control_points", "max_deviation",
+                                          "curvature_monotone", "tolerance", "spans", "continuity", "monotone_segments",
+                                          "constant_curvature_segments", "max_curvature_jump", "status", "message"}));
       EXPECT_EQ(e["file"], f.string());
       EXPECT_EQ(e["format"], ext);
       EXPECT_EQ(e["status"], "ok");
@@ -98,8 +98,8 @@ TEST(CliSpaceExport, BatchWritesOneFilePerRow) {
                         "\"1,1,1\",\"1,0,0\",\"1.36235775447667362,1.93203908596722629,1\","
                         "\"-0.4838825660252134,0.8293701183329452,0.279289937364832\"\n";
   const fs::path f = temp_dir() / "batch.dxf";
-  const auto run = test::run_lac("space --alpha -1 --beta -1 --omega 0.1 --batch " + csv.string() + " --export " +
-                                 f.string());
+  const auto run =
+      test::run_lac("space --alpha -1 --beta -1 --omega 0.1 --batch " + csv.string() + " --export " + f.string());
   EXPECT_EQ(run.status, 0) << run.out;
   EXPECT_TRUE(fs::exists(temp_dir() / "batch_row1.dxf"));
   EXPECT_TRUE(fs::exists(temp_dir() / "batch_row2.dxf"));

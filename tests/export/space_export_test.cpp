@@ -185,11 +185,12 @@ TEST(SpaceExport, BoundHoldsOnRandomSegments) {
     }
   }
   EXPECT_GE(tested, cases * 9 / 10);
-  std::printf("space export: %d curves, bound/measured min %.3g, geometric mean %.3g, max %.3g; quintic at 1e-6: "
-              "%.1f spans, %.1f control points on average\ntightest: %s\n",
-              exported, min_ratio, std::exp(sum_log_ratio / exported), max_ratio,
-              static_cast<double>(spans_default) / std::max(1L, count_default),
-              static_cast<double>(points_default) / std::max(1L, count_default), tightest.c_str());
+  std::printf(
+      "space export: %d curves, bound/measured min %.3g, geometric mean %.3g, max %.3g; quintic at 1e-6: "
+      "%.1f spans, %.1f control points on average\ntightest: %s\n",
+      exported, min_ratio, std::exp(sum_log_ratio / exported), max_ratio,
+      static_cast<double>(spans_default) / std::max(1L, count_default),
+      static_cast<double>(points_default) / std::max(1L, count_default), tightest.c_str());
 }
 
 /// Near the integration's floor (tolerance 1e-11 × length) the end-data term is a large part of the
