@@ -15,6 +15,10 @@ namespace lac::cli {
 /// gives "export": null and writes nothing. InputError "export" for an unknown extension, a file
 /// that cannot be written, or STEP/IGES in a build without OpenCASCADE.
 void add_export(Json& report, const PlanarCurve* curve, const CommonArgs& common);
+/// The same for `lac space` (export/space_to_bspline.hpp): .svg is an InputError (planar curves
+/// only); curvature_monotone, monotone_segments, constant_curvature_segments and
+/// max_curvature_jump are null (the check is planar).
+void add_export(Json& report, const SpaceCurve* curve, const CommonArgs& common);
 
 /// The arc [s0, s1] (s0 < s1) of a quadratic LA curve (lac quadratic).
 struct QuadraticArc {

@@ -1,6 +1,7 @@
 // lac space: G1 or compound-rhythm LA space segment between two points with end tangents
 // [Yoshida–Fukuda–Saito–Saito 2011].
 #include "cli/batch.hpp"
+#include "cli/export.hpp"
 #include "cli/options.hpp"
 #include "lac/constructions/space_segment.hpp"
 
@@ -57,6 +58,7 @@ Report solve(const SpaceArgs& a) {
   if (compound) info["joint"] = drawn && res.info.joint ? xyz(*res.info.joint) : none3;
   j["info"] = std::move(info);
   if (drawn) add_space_points(j, res.curve, n);
+  add_export(j, drawn ? &res.curve : nullptr, a.common);
   return r;
 }
 
@@ -82,6 +84,7 @@ void setup(CLI::App& app) {
   sub->add_option("--tol", a->tol, "Integration rtol (default 1e-10; atol = tol/10)");
   sub->add_option("--tangent-tolerance", a->tangent_tolerance, "Success: end-tangent error <= this (rad)")->capture_default_str();
   add_common_options(*sub, a->common, false);
+  add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);
 }
 

@@ -28,6 +28,7 @@
 #include <TopoDS_Edge.hxx>
 
 #include "lac/common/error.hpp"
+#include "lac/export/write3.hpp"
 
 namespace lac {
 
@@ -43,14 +44,19 @@ void quiet() {
   (void)done;
 }
 
-Handle(Geom_BSplineCurve) make_curve(const BSpline& b) {
+gp_Pnt pnt(const std::complex<double>& c) { return gp_Pnt(c.real(), c.imag(), 0.0); }
+gp_Pnt pnt(const Eigen::Vector3d& c) { return gp_Pnt(c.x(), c.y(), c.z()); }
+
+/// BSpline (in the plane z = 0) or BSpline3.
+template <class B>
+Handle(Geom_BSplineCurve) make_curve(const B& b) {
   b.validate();
   std::vector<double> values;
   std::vector<int> mults;
   b.distinct_knots(values, mults);
   const int n = static_cast<int>(b.control_points.size());
   TColgp_Array1OfPnt poles(1, n);
-  for (int i = 0; i < n; ++i) poles.SetValue(i + 1, gp_Pnt(b.control_points[i].real(), b.control_points[i].imag(), 0.0));
+  for (int i = 0; i < n; ++i) poles.SetValue(i + 1, pnt(b.control_points[i]));
   TColStd_Array1OfReal knots(1, static_cast<int>(values.size()));
   TColStd_Array1OfInteger multiplicities(1, static_cast<int>(values.size()));
   for (size_t i = 0; i < values.size(); ++i) {
@@ -63,9 +69,8 @@ Handle(Geom_BSplineCurve) make_curve(const BSpline& b) {
   return new Geom_BSplineCurve(poles, weights, knots, multiplicities, b.degree);
 }
 
-}  // namespace
-
-void write_step(const std::string& path, const BSpline& b) {
+template <class B>
+void step_file(const std::string& path, const B& b) {
   quiet();
   try {
     const Handle(Geom_BSplineCurve) c = make_curve(b);
@@ -89,7 +94,8 @@ void write_step(const std::string& path, const BSpline& b) {
   }
 }
 
-void write_iges(const std::string& path, const BSpline& b) {
+template <class B>
+void iges_file(const std::string& path, const B& b) {
   quiet();
   try {
     IGESControl_Controller::Init();
@@ -112,6 +118,19 @@ void write_iges(const std::string& path, const BSpline& b) {
   } catch (const Standard_Failure& e) {
     throw_input_error("write_iges", "export", "'" + path + "': OpenCASCADE: " + std::string(e.GetMessageString()));
   }
+}
+
+}  // namespace
+
+void write_step(const std::string& path, const BSpline& b) { step_file(path, b); }
+void write_iges(const std::string& path, const BSpline& b) { iges_file(path, b); }
+void write_step(const std::string& path, const BSpline3& b) { step_file(path, b); }
+void write_iges(const std::string& path, const BSpline3& b) { iges_file(path, b); }
+
+void write_any(const std::string& path, ExportFormat format, const BSpline3& b) {
+  if (format == ExportFormat::step) return write_step(path, b);
+  if (format == ExportFormat::iges) return write_iges(path, b);
+  write_file(path, format, b);
 }
 
 void write_any(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg) {

@@ -1,38 +1,50 @@
-// CAD export (export/, docs/export.md) for lac.Curve and lac.QuadraticCurve: the certified B-spline
-// of a planar curve or of a quadratic LA curve's arc and its files (.dxf, .svg; .step and .iges when the module is built with OpenCASCADE).
+// CAD export (export/, docs/export.md) for lac.Curve, lac.QuadraticCurve and lac.SpaceCurve: the
+// B-spline of a planar curve, of a quadratic LA curve's arc or of a space curve within a bound, and
+// their files (.dxf; .svg for planar curves; .step and .iges when the module is built with OpenCASCADE).
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
 #include "lac/export/export_curve.hpp"
+#include "lac/export/export_space_curve.hpp"
 
 namespace lacpy {
 
 namespace {
 
-py::dict bspline_dict(const lac::ExportResult& r) {
+void put(py::detail::unchecked_mutable_reference<double, 2>& p, size_t i, std::complex<double> z) {
+  p(static_cast<py::ssize_t>(i), 0) = z.real();
+  p(static_cast<py::ssize_t>(i), 1) = z.imag();
+}
+template <class Point>
+void put(py::detail::unchecked_mutable_reference<double, 2>& p, size_t i, const Point& v) {
+  for (py::ssize_t k = 0; k < 3; ++k) p(static_cast<py::ssize_t>(i), k) = v[k];
+}
+
+/// A planar (ExportResult: control points n x 2) or space (SpaceExportResult: n x 3, no planar
+/// curvature check: curvature_monotone None) B-spline result as a dict.
+template <class R>
+py::dict bspline_dict(const R& r) {
+  constexpr bool planar = std::is_same_v<R, lac::ExportResult>;
   py::dict d;
   d["status"] = status_text(r.summary.status);
   d["message"] = r.summary.message;
   d["usable"] = r.usable();
-  const lac::BSpline& b = r.curve;
+  const auto& b = r.curve;
   d["degree"] = b.degree;
   py::array_t<double> knots(static_cast<py::ssize_t>(b.knots.size()));
   std::copy(b.knots.begin(), b.knots.end(), knots.mutable_data());
   d["knots"] = knots;
-  py::array_t<double> points({static_cast<py::ssize_t>(b.control_points.size()), py::ssize_t{2}});
+  py::array_t<double> points({static_cast<py::ssize_t>(b.control_points.size()), py::ssize_t{planar ? 2 : 3}});
   auto p = points.mutable_unchecked<2>();
-  for (size_t i = 0; i < b.control_points.size(); ++i) {
-    p(static_cast<py::ssize_t>(i), 0) = b.control_points[i].real();
-    p(static_cast<py::ssize_t>(i), 1) = b.control_points[i].imag();
-  }
+  for (size_t i = 0; i < b.control_points.size(); ++i) put(p, i, b.control_points[i]);
   d["control_points"] = points;
   d["weights"] = py::none();
-  const lac::ExportInfo& in = r.info;
-  d["tolerance"] = in.tolerance;
-  d["max_deviation"] = in.max_deviation;
-  d["spans"] = in.spans;
-  d["curvature_monotone"] = in.curvature_monotone;
-  d["continuity"] = in.continuity;
+  d["tolerance"] = r.info.tolerance;
+  d["max_deviation"] = r.info.max_deviation;
+  d["spans"] = r.info.spans;
+  if constexpr (planar) d["curvature_monotone"] = r.info.curvature_monotone;
+  else d["curvature_monotone"] = py::none();
+  d["continuity"] = r.info.continuity;
   return d;
 }
 
@@ -116,6 +128,38 @@ void bind_export(py::module_& m) {
       py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
       "Writes the certified B-spline of the arc [s_from, s_to] of a quadratic LA curve (default: its "
       "default_range) to `path`; the same dict as for a planar curve.");
+
+  m.def(
+      "to_bspline",
+      [](const SpaceCurve& c, double tolerance, int degree, long max_spans) {
+        lac::SpaceExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::to_bspline(c.curve, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
+        }
+        return bspline_dict(r);
+      },
+      py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
+      "A space curve (lac.SpaceCurve) as a B-spline in space within max_deviation (docs/export.md): the same dict "
+      "with control_points n x 3 and curvature_monotone None.");
+  m.def(
+      "export_curve",
+      [](const SpaceCurve& c, const std::string& path, double tolerance, std::optional<int> degree) {
+        const lac::PreparedExport prepared = lac::prepare_space_export(
+            {.path = path, .tolerance = tolerance, .degree = degree}, {"export_curve", "path", "tolerance", "degree"});
+        lac::SpaceExportResult r;
+        {
+          py::gil_scoped_release release;
+          r = lac::export_curve(c.curve, path, prepared);
+        }
+        py::dict d = bspline_dict(r);
+        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
+        d["format"] = lac::to_string(prepared.format);
+        return d;
+      },
+      py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      "Writes the B-spline of a space curve to `path` (.step/.stp, .iges/.igs, .dxf; .svg holds planar curves "
+      "only: ValueError naming path).");
 }
 
 }  // namespace lacpy

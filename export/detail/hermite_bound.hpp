@@ -1,0 +1,192 @@
+#pragma once
+// Internal: the pieces of the certified Hermite export (export/to_bspline.hpp) that do not depend on
+// the curve's dimension, shared by the planar and the space export (export/space_to_bspline.hpp):
+// the Peano constants of the cubic and quintic Hermite interpolants, the least bound over the
+// derivative orders on a span, the splitting of a parameter interval until every span's bound is
+// below a target, majorant polynomials in bounds of derivatives, degree elevation of a Bézier
+// piece and the assembly of the Hermite Bézier pieces into one B-spline (blossoms).
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace lac::detail {
+
+// Peano-kernel constants of the Hermite interpolants on [0, 1]: C[m] = max over t of ∫|K_m(t, τ)| dτ,
+// where f(t) − (Hf)(t) = ∫ K_m(t, τ) f^(m)(τ) dτ, m the derivative used (tests/reference/
+// export_kernels.py; rounded up). Cubic (f, f' at both ends), m = 2, 3, 4: 0.0624987 < 1/16, 1/96,
+// 1/384 (the classical t²(1−t)²/24). Quintic (f, f', f'' at both ends), m = 3 … 6: 1/46080 at m = 6
+// (t³(1−t)³/720), 1/10240 at m = 5, 0.0061849 and 0.00067702 at m = 3, 4; no m = 2 (the
+// interpolant takes f''). For a vector-valued f the same bounds hold with |f^(m)| the Euclidean
+// norm (the kernel is scalar: |∫ K f^(m)| ≤ ∫ |K| |f^(m)|).
+inline constexpr std::array<double, 7> kHermiteCubic{
+    0, 0, 1.0 / 16.0, 1.0 / 96.0 * (1 + 1e-9), 1.0 / 384.0 * (1 + 1e-9), 0, 0};
+inline constexpr std::array<double, 7> kHermiteQuintic{
+    0, 0, 0, 0.00619, 0.000678, 0.0000977, 1.0 / 46080.0 * (1 + 1e-9)};
+/// Relative slack on derivative bounds evaluated in floating point at the span ends.
+inline constexpr double kDerivativeSlack = 1e-9;
+
+struct HermiteSpanBound {
+  double value = HUGE_VAL;           ///< the interpolation bound
+  int order = 2;                     ///< the derivative it uses (its rate in h)
+  int degree = 3;                    ///< the Hermite interpolant: 3 (c, c') or 5 (c, c', c'')
+  std::array<double, 7> by_order{};  ///< the bound of each order of that degree (0: unused)
+};
+
+/// The least over m of C_m h^m M[m] for the Hermite interpolant of `degree` (3 or 5) on a span of
+/// length h, M[m] ≥ |c^(m)| on the span (+inf: unbounded). For degree 5 with every order unbounded,
+/// the cubic's (a quintic span is then the cubic one raised to degree 5).
+inline HermiteSpanBound hermite_span_bound(double h, int degree, const std::array<double, 7>& M) {
+  HermiteSpanBound best;
+  for (int d : {degree, 3}) {
+    const auto& C = d == 3 ? kHermiteCubic : kHermiteQuintic;
+    best = {HUGE_VAL, 2, d, {}};
+    for (int order = 2; order <= d + 1; ++order) {
+      if (C[order] == 0) continue;
+      const double v = C[order] * std::pow(h, order) * M[order];
+      best.by_order[order] = std::isnan(v) ? HUGE_VAL : v;
+      if (v < best.value) best.value = v, best.order = order;
+    }
+    if (best.value < HUGE_VAL) break;
+  }
+  return best;
+}
+
+/// Splits [u0, u1] until every span's bound (bound(a, b), a HermiteSpanBound whose by_order scale
+/// as (b − a)^m) is at most `target`, appending the spans' ends after u0 and their bounds. False
+/// when the cap on spans is reached (ends counts the spans already made).
+template <class Bound>
+bool split_hermite_spans(double u0, double u1, double target, long cap, const Bound& bound, std::vector<double>& ends,
+                         std::vector<HermiteSpanBound>& bounds) {
+  const HermiteSpanBound b = bound(u0, u1);
+  if (b.value <= target || !(u1 - u0 > 4 * DBL_EPSILON * std::max(std::abs(u0), std::abs(u1)))) {
+    if (static_cast<long>(ends.size()) >= cap) return false;
+    ends.push_back(u1);
+    bounds.push_back(b);
+    return true;
+  }
+  // Into n equal parts, n the least over the orders m of (bound_m / target)^(1/m) (bound_m ∝ h^m,
+  // the derivative bounds do not grow on a part), at least 2 and at most 64 per level.
+  double n_real = HUGE_VAL;
+  for (int m = 2; m < 7; ++m)
+    if (b.by_order[m] > 0 && std::isfinite(b.by_order[m]))
+      n_real = std::min(n_real, std::ceil(std::pow(b.by_order[m] / target, 1.0 / m) * 1.01));
+  const int n = static_cast<int>(std::clamp(std::isfinite(n_real) ? n_real : 2.0, 2.0, 64.0));
+  double a = u0;
+  for (int i = 1; i <= n; ++i) {
+    const double c = i == n ? u1 : u0 + (u1 - u0) * i / n;
+    if (!split_hermite_spans(a, c, target, cap, bound, ends, bounds)) return false;
+    a = c;
+  }
+  return true;
+}
+
+/// A polynomial with nonnegative coefficients in V variables v_i ≥ |f_i|, bounds of functions and
+/// their derivatives; derivative() is the formal derivative with v_i' = v_{next[i]} (a chain
+/// k_0 → k_1 → … per function), a majorant of |p'| when p majorizes |p(f)| term by term.
+template <size_t V>
+class MajorantPoly {
+ public:
+  using Exponents = std::array<int, V>;
+  static MajorantPoly constant(double c) {
+    MajorantPoly p;
+    p.terms_[Exponents{}] = c;
+    return p;
+  }
+  MajorantPoly& operator+=(const MajorantPoly& o) {
+    for (const auto& [e, c] : o.terms_) terms_[e] += c;
+    return *this;
+  }
+  /// This polynomial times v_i.
+  MajorantPoly times(size_t i) const {
+    MajorantPoly p;
+    for (const auto& [e, c] : terms_) {
+      Exponents f = e;
+      ++f[i];
+      p.terms_[f] += c;
+    }
+    return p;
+  }
+  MajorantPoly derivative(const std::array<size_t, V>& next) const {
+    MajorantPoly p;
+    for (const auto& [e, c] : terms_)
+      for (size_t j = 0; j < V; ++j) {
+        if (e[j] == 0) continue;
+        Exponents d = e;
+        --d[j];
+        ++d[next[j]];
+        p.terms_[d] += c * e[j];
+      }
+    return p;
+  }
+  /// The value at v (each ≥ 0; an unbounded factor +inf makes the term +inf, 0·inf included).
+  double operator()(const std::array<double, V>& v) const {
+    double sum = 0;
+    for (const auto& [e, c] : terms_) {
+      double term = c;
+      for (size_t j = 0; j < V; ++j)
+        for (int i = 0; i < e[j]; ++i) term *= v[j];
+      sum += std::isnan(term) ? HUGE_VAL : term;
+    }
+    return sum;
+  }
+
+ private:
+  std::map<Exponents, double> terms_;
+};
+
+/// The same Bézier curve one degree higher (exact up to rounding).
+template <class P>
+std::vector<P> elevate_bezier(const std::vector<P>& p) {
+  const size_t n = p.size() - 1;
+  std::vector<P> q(n + 2);
+  q[0] = p[0];
+  q[n + 1] = p[n];
+  for (size_t i = 1; i <= n; ++i) {
+    const double a = static_cast<double>(i) / static_cast<double>(n + 1);
+    q[i] = a * p[i - 1] + (1 - a) * p[i];
+  }
+  return q;
+}
+
+/// The B-spline of consecutive Hermite Bézier pieces of degree p (3 or 5) over the parameter
+/// values knots[0] < … < knots[n] (blossoms; docs/export.md). junction[j]: the continuity after
+/// piece j (2: C2, 1: C1). Degree 3, every junction C1 (knot ×2): B0, then B1 B2 of each span,
+/// then the end. Degree 5: B0 B1, then B2 B3 of each span and at a junction C2 (knot ×3) the
+/// point f(a, b, b, b, c) = B3 + (c − a)/(b − a) (B4 − B3), at a junction C1 (knot ×4) B4 and the
+/// next span's B1; then B4 B5 of the last span.
+template <class P>
+void assemble_hermite_bspline(const std::vector<std::vector<P>>& pieces, const std::vector<int>& junction,
+                              const std::vector<double>& knots, int p, std::vector<double>& out_knots,
+                              std::vector<P>& out_points) {
+  const size_t n = pieces.size();
+  out_knots.clear();
+  out_points.clear();
+  for (int i = 0; i <= p; ++i) out_knots.push_back(knots.front());
+  out_points.push_back(pieces[0][0]);
+  if (p == 5) out_points.push_back(pieces[0][1]);
+  for (size_t j = 0; j < n; ++j) {
+    const std::vector<P>& pc = pieces[j];
+    out_points.push_back(p == 3 ? pc[1] : pc[2]);
+    out_points.push_back(p == 3 ? pc[2] : pc[3]);
+    if (j + 1 == n) break;
+    const int multiplicity = p - (p == 5 ? junction[j] : 1);
+    for (int i = 0; i < multiplicity; ++i) out_knots.push_back(knots[j + 1]);
+    if (p == 5) {
+      if (junction[j] == 2) {
+        const double a = knots[j], bb = knots[j + 1], c = knots[j + 2];
+        out_points.push_back(pc[3] + ((c - a) / (bb - a)) * (pc[4] - pc[3]));
+      } else {
+        out_points.push_back(pc[4]);
+        out_points.push_back(pieces[j + 1][1]);
+      }
+    }
+  }
+  if (p == 5) out_points.push_back(pieces.back()[4]);
+  out_points.push_back(pieces.back().back());
+  for (int i = 0; i <= p; ++i) out_knots.push_back(knots.back());
+}
+
+}  // namespace lac::detail
