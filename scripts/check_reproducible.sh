@@ -11,7 +11,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$(cd "${1:-$root/build}" && pwd)
-experiments=(integrator_accuracy planar_figures quadratic_figures g2_figures space_figures g1_hermite chain_figures)
+experiments=(integrator_accuracy planar_figures quadratic_figures g2_figures space_figures g1_hermite chain_figures export_lcg)
 
 is_timing() {
   local stem
