@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Example: a G1 Hermite LA segment and a G2 triple, their points, and a figure with the curvature
-comb, kappa(s) and the logarithmic curvature graph.
+"""Example: a G1 Hermite LA segment and a G2 triple, their points, the G2 curve exported for CAD
+(a certified B-spline in a DXF file beside the figure) and a figure with the curvature comb,
+kappa(s) and the logarithmic curvature graph.
 
     PYTHONPATH=build/python python3 python/examples/g1_figure.py [out.png]
 """
@@ -23,7 +24,12 @@ for s, x, y, k in zip(pts.s, pts.x, pts.y, pts.kappa):
 g = lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, alpha=-0.5)
 print(g.status, g.summary["length"], len(g.curve.segments), "segments")
 
-fig = lac.plot(c, comb=True, lcg=True, title="G1 Hermite, alpha = -0.7")
 out = sys.argv[1] if len(sys.argv) > 1 else "g1_figure.png"
+dxf = out.rsplit(".", 1)[0] + "_g2.dxf"
+e = lac.export_curve(g.curve, dxf, tolerance=1e-6)  # .step/.iges too when the module has OpenCASCADE
+print(e["status"], "wrote", e["file"], e["control_points"].shape[0] if e["usable"] else 0, "control points,",
+      f"max deviation {e['max_deviation']:.2e}")
+
+fig = lac.plot(c, comb=True, lcg=True, title="G1 Hermite, alpha = -0.7")
 fig.savefig(out, dpi=120)
 print("wrote", out)
