@@ -48,18 +48,45 @@ py::dict bspline_dict(const R& r) {
   return d;
 }
 
+constexpr lac::ExportNames kNames{"export_curve", "path", "tolerance", "degree"};
+
+lac::ExportOptions options(double tolerance, int degree, long max_spans) {
+  return {.tolerance = tolerance, .max_spans = max_spans, .degree = degree};
+}
+
+/// The B-spline `make()` returns (a to_bspline call), computed with the GIL released, as a dict.
+template <class Make>
+py::dict bspline_of(Make&& make) {
+  decltype(make()) r;
+  {
+    py::gil_scoped_release release;
+    r = make();
+  }
+  return bspline_dict(r);
+}
+
+/// The same for a file written by `write()` (an export_curve call): the dict gains file (None when
+/// nothing was written) and format.
+template <class Write>
+py::dict written(const std::string& path, const lac::PreparedExport& prepared, Write&& write) {
+  decltype(write()) r;
+  {
+    py::gil_scoped_release release;
+    r = write();
+  }
+  py::dict d = bspline_dict(r);
+  d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
+  d["format"] = lac::to_string(prepared.format);
+  return d;
+}
+
 }  // namespace
 
 void bind_export(py::module_& m) {
   m.def(
       "to_bspline",
       [](const Curve& c, double tolerance, int degree, long max_spans) {
-        lac::ExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::to_bspline(c.curve, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
-        }
-        return bspline_dict(r);
+        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
       "The curve as a B-spline with a certified bound on its deviation (docs/export.md): a dict with status, "
@@ -69,17 +96,8 @@ void bind_export(py::module_& m) {
   m.def(
       "export_curve",
       [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport prepared = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree},
-                                                                 {"export_curve", "path", "tolerance", "degree"});
-        lac::ExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::export_curve(c.curve, path, prepared);
-        }
-        py::dict d = bspline_dict(r);
-        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
-        d["format"] = lac::to_string(prepared.format);
-        return d;
+        const lac::PreparedExport p = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
+        return written(path, p, [&] { return lac::export_curve(c.curve, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
       "Writes the certified B-spline of the curve to `path`, the format from its extension (.step/.stp, "
@@ -96,12 +114,7 @@ void bind_export(py::module_& m) {
       [arc](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to, double tolerance,
             int degree, long max_spans) {
         const auto [s0, s1] = arc(c, s_from, s_to);
-        lac::ExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::to_bspline(c, s0, s1, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
-        }
-        return bspline_dict(r);
+        return bspline_of([&] { return lac::to_bspline(c, s0, s1, options(tolerance, degree, max_spans)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
       py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
@@ -111,18 +124,9 @@ void bind_export(py::module_& m) {
       "export_curve",
       [arc](const lac::QuadraticLaCurve& c, const std::string& path, std::optional<double> s_from,
             std::optional<double> s_to, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport prepared = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree},
-                                                                 {"export_curve", "path", "tolerance", "degree"});
+        const lac::PreparedExport p = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
         const auto [s0, s1] = arc(c, s_from, s_to);
-        lac::ExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::export_curve(c, s0, s1, path, prepared);
-        }
-        py::dict d = bspline_dict(r);
-        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
-        d["format"] = lac::to_string(prepared.format);
-        return d;
+        return written(path, p, [&] { return lac::export_curve(c, s0, s1, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
       py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
@@ -132,12 +136,7 @@ void bind_export(py::module_& m) {
   m.def(
       "to_bspline",
       [](const SpaceCurve& c, double tolerance, int degree, long max_spans) {
-        lac::SpaceExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::to_bspline(c.curve, {.tolerance = tolerance, .max_spans = max_spans, .degree = degree});
-        }
-        return bspline_dict(r);
+        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
       "A space curve (lac.SpaceCurve) as a B-spline in space within max_deviation (docs/export.md): the same dict "
@@ -145,17 +144,9 @@ void bind_export(py::module_& m) {
   m.def(
       "export_curve",
       [](const SpaceCurve& c, const std::string& path, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport prepared = lac::prepare_space_export(
-            {.path = path, .tolerance = tolerance, .degree = degree}, {"export_curve", "path", "tolerance", "degree"});
-        lac::SpaceExportResult r;
-        {
-          py::gil_scoped_release release;
-          r = lac::export_curve(c.curve, path, prepared);
-        }
-        py::dict d = bspline_dict(r);
-        d["file"] = r.usable() ? py::object(py::str(path)) : py::none();
-        d["format"] = lac::to_string(prepared.format);
-        return d;
+        const lac::PreparedExport p =
+            lac::prepare_space_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
+        return written(path, p, [&] { return lac::export_curve(c.curve, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
       "Writes the B-spline of a space curve to `path` (.step/.stp, .iges/.igs, .dxf; .svg holds planar curves "
