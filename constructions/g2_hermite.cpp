@@ -23,15 +23,11 @@ constexpr std::string_view kPaperDescription =
     "for Eq. (41) with its analytic derivative";
 constexpr std::string_view kPaperOptions = "tolerance, max_iterations (outer), max_inner_iterations";
 
-static_assert(static_cast<int>(G2Solver::newton) == static_cast<int>(NonlinearMethod::newton) &&
-              static_cast<int>(G2Solver::ceres) == static_cast<int>(NonlinearMethod::ceres) &&
-              static_cast<int>(G2Solver::simplex) == static_cast<int>(NonlinearMethod::simplex));
-
 // The N-D registry's rows (names, aliases, descriptions) as G2 solvers, then paper.
 std::vector<SolverMethodInfo<G2Solver>> make_g2_solvers() {
   std::vector<SolverMethodInfo<G2Solver>> rows;
   for (const NonlinearMethodInfo& m : nonlinear_methods())
-    rows.push_back({static_cast<G2Solver>(m.method), m.name, m.aliases, m.description, m.options});
+    rows.push_back({G2Solver{G2Solver::Kind::nonlinear, m.method}, m.name, m.aliases, m.description, m.options});
   rows.push_back({G2Solver::paper, "paper", {}, kPaperDescription, kPaperOptions});
   return rows;
 }
@@ -130,8 +126,9 @@ void G2Options::validate() const {
   if (max_inner_iterations < 1 || max_inner_iterations > 100000)
     throw_input_error("g2", "max_inner_iterations", max_inner_iterations, "[1, 100000]");
   if (max_evaluations < 1) throw_input_error("g2", "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
-  if (static_cast<int>(solver) < 0 || static_cast<size_t>(solver) >= g2_solvers().size())
-    throw_input_error("g2", "solver", static_cast<double>(solver), "a G2Solver");
+  bool known = false;
+  for (const SolverMethodInfo<G2Solver>& row : g2_solvers()) known = known || row.method == solver;
+  if (!known) throw_input_error("g2", "solver", "not a choice of g2_solvers() (parse_g2_solver gives one)");
   std::visit([](const auto& m) { m.validate(); }, integrator);
 }
 
@@ -154,7 +151,7 @@ void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detai
     p.integrate.set_limit(std::max(0L, o.max_evaluations - sum.evaluations));
     detail::G2SolverOutcome so = o.solver == G2Solver::paper
                                      ? detail::solve_g2_paper(p, e, o)
-                                     : detail::solve_g2_nonlinear(static_cast<NonlinearMethod>(o.solver), p, e, o);
+                                     : detail::solve_g2_nonlinear(o.solver.method, p, e, o);
     if (so.status != Status::ok && so.evaluations >= p.integrate.limit()) {
       so.status = Status::max_iterations;
       so.message = "integrand evaluation budget max_evaluations = " + std::to_string(o.max_evaluations) +

@@ -45,6 +45,7 @@
 #include "lac/common/summary.hpp"
 #include "lac/curves/planar/planar_curve.hpp"
 #include "lac/integrators/registry.hpp"
+#include "lac/solvers/nonlinear_method.hpp"
 #include "lac/solvers/method_info.hpp"
 
 namespace lac {
@@ -67,8 +68,18 @@ struct G2Problem {
   double alpha = -1;  ///< slope of the LCG, one for all three segments, [−5, 5]
 };
 
-/// The N-D registry's methods in its order, then 004's own.
-enum class G2Solver { newton, ceres, simplex, paper };
+/// The G2 solver: a method of the N-D registry (solvers/nonlinear.hpp) on the six conditions, or
+/// 004's own iteration (section 3.3). G2Solver::newton, ::ceres, ::simplex, ::paper name them.
+struct G2Solver {
+  enum class Kind { nonlinear, paper } kind = Kind::nonlinear;
+  NonlinearMethod method = NonlinearMethod::newton;  ///< of Kind::nonlinear (newton for paper)
+  static const G2Solver newton, ceres, simplex, paper;
+  friend bool operator==(const G2Solver&, const G2Solver&) = default;
+};
+inline constexpr G2Solver G2Solver::newton{Kind::nonlinear, NonlinearMethod::newton};
+inline constexpr G2Solver G2Solver::ceres{Kind::nonlinear, NonlinearMethod::ceres};
+inline constexpr G2Solver G2Solver::simplex{Kind::nonlinear, NonlinearMethod::simplex};
+inline constexpr G2Solver G2Solver::paper{Kind::paper, NonlinearMethod::newton};
 /// newton, ceres, simplex (with the N-D registry's aliases and descriptions), paper.
 std::span<const SolverMethodInfo<G2Solver>> g2_solvers();
 std::string_view to_string(G2Solver s);

@@ -31,17 +31,9 @@
 
 #include "lac/common/status.hpp"
 #include "lac/solvers/method_info.hpp"
+#include "lac/solvers/nonlinear_method.hpp"
 
 namespace lac {
-
-enum class NonlinearMethod { newton, ceres, simplex };
-
-using NonlinearMethodInfo = SolverMethodInfo<NonlinearMethod>;
-/// The registry, one row per method in enum order.
-std::span<const NonlinearMethodInfo> nonlinear_methods();
-/// A name or alias of nonlinear_methods(); InputError naming "solver" (listing the valid names) otherwise.
-NonlinearMethod parse_nonlinear_method(std::string_view name);
-std::string_view to_string(NonlinearMethod m);
 
 using ConstVectorMap = Eigen::Map<const Eigen::VectorXd>;
 using VectorMap = Eigen::Map<Eigen::VectorXd>;

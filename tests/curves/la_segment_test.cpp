@@ -79,8 +79,9 @@ TEST(LaSegment, ClosedFormsMatchReference) {
 
 // θ' = κ and κ' = dκ/ds: θ(s) − θ(0) against Gauss–Kronrod on κ, dκ/ds against a central difference.
 TEST(LaSegment, ClosedFormsMatchTheirDefinitions) {
-  for (const auto& [id, seg] : reference_segments()) {
+  for (const auto& [id, segment] : reference_segments()) {
     SCOPED_TRACE("case " + std::to_string(id));
+    const LaSegment& seg = segment;  // a reference, not a structured binding: lambdas capture it (clang 14)
     const double L = seg.length();
     for (double f : {0.3, 0.7, 1.0}) {
       const double s = f * L;
