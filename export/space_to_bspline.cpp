@@ -69,20 +69,12 @@ HermiteSpanBound span_bound(const LaSpaceCurve& law, double s0, double s1, int d
   return detail::hermite_span_bound(s1 - s0, degree, M);
 }
 
-/// The finer and the coarser Frenet integration (header comment).
-OdeOptions fine_ode() {
+/// A Frenet integration with the given method and tolerances.
+OdeOptions frenet_ode(OdeMethod method, double rtol, double atol) {
   OdeOptions o;
-  o.method = OdeMethod::magnus6;
-  o.rtol = 1e-13;
-  o.atol = 1e-14;
-  o.max_steps = 1'000'000;
-  return o;
-}
-OdeOptions coarse_ode() {
-  OdeOptions o;
-  o.method = OdeMethod::rk45;
-  o.rtol = 1e-10;
-  o.atol = 1e-11;
+  o.method = method;
+  o.rtol = rtol;
+  o.atol = atol;
   o.max_steps = 1'000'000;
   return o;
 }
@@ -94,10 +86,7 @@ using Piece = std::vector<Vec3>;
 SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& options) {
   const auto t_start = std::chrono::steady_clock::now();
   if (curve.pieces().empty()) throw_input_error(kWho, "curve", "an empty curve has nothing to export");
-  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-    throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
-  if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
-  if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
+  detail::validate_export_options(options);
   const int p = options.degree;
   SpaceExportResult r;
   const double length = curve.length();
@@ -124,7 +113,9 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   double interpolation = 0, positions = 0, deviation = 0;  // user units
   bool all_g2 = p == 5;
   const auto& cps = curve.pieces();
-  const OdeOptions fine = fine_ode(), coarse = coarse_ode();
+  // The finer and the coarser Frenet integration (header comment).
+  const OdeOptions fine = frenet_ode(OdeMethod::magnus6, 1e-13, 1e-14),
+                   coarse = frenet_ode(OdeMethod::rk45, 1e-10, 1e-11);
   for (size_t k = 0; k < cps.size(); ++k) {
     const SpacePiece& sp = cps[k];
     const LaSpaceCurve& law = sp.law;
