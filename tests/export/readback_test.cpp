@@ -11,6 +11,7 @@
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/export/write.hpp"
+#include "tests/export/read_dxf.hpp"
 #ifdef LAC_WITH_OCCT
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -125,28 +126,14 @@ TEST(ExportReadBack, DxfByEzdxf) {
   ASSERT_TRUE(e.result.usable());
   const std::string path = temp_file("curve.dxf");
   write_file(path, ExportFormat::dxf, e.result.curve);
-  const std::string cmd = std::string("/usr/bin/python3 ") + LAC_SOURCE_DIR + "/tests/export/read_dxf.py " + path + " " +
-                          std::to_string(kPoints);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  ASSERT_EQ(pclose(pipe), 0) << out;
-  std::istringstream in(out);
-  int degree = 0;
-  size_t control_points = 0;
-  in >> degree >> control_points;
-  EXPECT_EQ(degree, 5);
-  EXPECT_EQ(control_points, e.result.curve.control_points.size());
-  double t, x, y, worst = 0;
-  int points = 0;
-  while (in >> t >> x >> y) {
-    worst = std::max(worst, std::abs(position_at(e.curve, std::clamp(t, 0.0, e.curve.length())).point.position -
-                                     std::complex<double>(x, y)));
-    ++points;
-  }
-  EXPECT_EQ(points, kPoints);
+  const test::DxfReadBack d = test::read_dxf(path, kPoints, 2);
+  EXPECT_EQ(d.degree, 5);
+  EXPECT_EQ(d.control_points, e.result.curve.control_points.size());
+  EXPECT_EQ(d.t.size(), static_cast<size_t>(kPoints));
+  double worst = 0;
+  for (size_t i = 0; i < d.t.size(); ++i)
+    worst = std::max(worst, std::abs(position_at(e.curve, std::clamp(d.t[i], 0.0, e.curve.length())).point.position -
+                                     std::complex<double>(d.point[i][0], d.point[i][1])));
   EXPECT_LE(worst, e.result.info.max_deviation);
   std::printf("ezdxf: deviation %.3g, bound %.3g\n", worst, e.result.info.max_deviation);
   std::filesystem::remove(path);

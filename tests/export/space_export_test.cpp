@@ -16,6 +16,7 @@
 #include "lac/export/export_space_curve.hpp"
 #include "lac/export/space_to_bspline.hpp"
 #include "lac/export/write3.hpp"
+#include "tests/export/read_dxf.hpp"
 #include "tests/support/input_error.hpp"
 #ifdef LAC_WITH_OCCT
 #include <BRep_Tool.hxx>
@@ -285,27 +286,15 @@ TEST(SpaceExportReadBack, DxfByEzdxf) {
   ASSERT_TRUE(e.usable());
   const std::string path = temp_file("curve.dxf");
   write_file(path, ExportFormat::dxf, e.curve);
-  const std::string cmd = std::string("/usr/bin/python3 ") + LAC_SOURCE_DIR + "/tests/export/read_dxf3.py " + path +
-                          " " + std::to_string(kPoints);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  ASSERT_EQ(pclose(pipe), 0) << out;
-  std::istringstream in(out);
-  int degree = 0;
-  size_t control_points = 0;
-  in >> degree >> control_points;
-  EXPECT_EQ(degree, 5);
-  EXPECT_EQ(control_points, e.curve.control_points.size());
-  std::vector<double> ts;
-  std::vector<Eigen::Vector3d> ps;
-  double t, x, y, z;
-  while (in >> t >> x >> y >> z) ts.push_back(t), ps.emplace_back(x, y, z);
-  ASSERT_EQ(ts.size(), static_cast<size_t>(kPoints));
+  const test::DxfReadBack r = test::read_dxf(path, kPoints, 3);
+  EXPECT_EQ(r.degree, 5);
+  EXPECT_EQ(r.control_points, e.curve.control_points.size());
+  ASSERT_EQ(r.t.size(), static_cast<size_t>(kPoints));
   size_t i = 0;
-  const double d = compare(c, ts.front(), ts.back(), kPoints, [&](double) { return ps[i++]; });
+  const double d = compare(c, r.t.front(), r.t.back(), kPoints, [&](double) {
+    const auto& p = r.point[i++];
+    return Eigen::Vector3d(p[0], p[1], p[2]);
+  });
   EXPECT_LE(d, e.info.max_deviation);
   std::printf("ezdxf: deviation %.3g, bound %.3g\n", d, e.info.max_deviation);
   std::filesystem::remove(path);
