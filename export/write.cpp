@@ -4,10 +4,9 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 
 #include "lac/common/error.hpp"
-#include "lac/export/detail/dxf.hpp"
+#include "lac/export/detail/write_text.hpp"
 
 namespace lac {
 
@@ -155,16 +154,10 @@ void write_svg(std::ostream& out, const BSpline& b, const SvgOptions& options) {
 }
 
 void write_file(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg) {
-  if (format == ExportFormat::step || format == ExportFormat::iges)
-    throw_input_error("write_file", "export",
-                      "'" + path + "': " + to_string(format) +
-                          " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
-  if (format == ExportFormat::dxf) write_dxf(out, b);
-  else write_svg(out, b, svg);
-  out.flush();
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
+  detail::write_export_file(path, format, [&](std::ostream& out) {
+    if (format == ExportFormat::dxf) write_dxf(out, b);
+    else write_svg(out, b, svg);
+  });
 }
 
 }  // namespace lac

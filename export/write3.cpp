@@ -1,10 +1,9 @@
 #include "lac/export/write3.hpp"
 
 #include <array>
-#include <fstream>
 
 #include "lac/common/error.hpp"
-#include "lac/export/detail/dxf.hpp"
+#include "lac/export/detail/write_text.hpp"
 
 namespace lac {
 
@@ -19,15 +18,7 @@ void write_file(const std::string& path, ExportFormat format, const BSpline3& b)
   if (format == ExportFormat::svg)
     throw_input_error("write_file", "export",
                       "'" + path + "': .svg holds planar curves; a space curve goes to .dxf, .step or .iges");
-  if (format == ExportFormat::step || format == ExportFormat::iges)
-    throw_input_error("write_file", "export",
-                      "'" + path + "': " + to_string(format) +
-                          " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
-  write_dxf(out, b);
-  out.flush();
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
+  detail::write_export_file(path, format, [&](std::ostream& out) { write_dxf(out, b); });
 }
 
 }  // namespace lac

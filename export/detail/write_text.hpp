@@ -1,12 +1,17 @@
 #pragma once
-// Internal: the one DXF writer of a SPLINE entity (R2000 group codes), used by write_dxf for the
-// planar BSpline (export/write.hpp) and the space BSpline3 (export/write3.hpp), and the number
-// format of every hand-written export (17 significant digits: round-trip exact).
+// Internal: what the writers of the planar BSpline (export/write.hpp) and the space BSpline3
+// (export/write3.hpp) share: the number format of every hand-written export (17 significant
+// digits: round-trip exact), the one DXF writer of a SPLINE entity (R2000 group codes) and the
+// writing of a file with its errors.
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "lac/common/error.hpp"
+#include "lac/export/write.hpp"
 
 namespace lac::detail {
 
@@ -60,6 +65,21 @@ void write_dxf_spline(std::ostream& out, bool planar, int degree, const std::vec
   }
   g(0, "ENDSEC");
   g(0, "EOF");
+}
+
+/// Writes `path` by write(std::ostream&) (DXF, SVG); InputError naming "export" for STEP and IGES
+/// (OpenCASCADE: export/occt/occt_writer.hpp) and when the file cannot be written.
+template <class Write>
+void write_export_file(const std::string& path, ExportFormat format, const Write& write) {
+  if (format == ExportFormat::step || format == ExportFormat::iges)
+    throw_input_error("write_file", "export",
+                      "'" + path + "': " + to_string(format) +
+                          " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
+  write(out);
+  out.flush();
+  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
 }
 
 }  // namespace lac::detail
