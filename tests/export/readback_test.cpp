@@ -11,18 +11,8 @@
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/export/write.hpp"
-#include "tests/export/read_dxf.hpp"
+#include "tests/export/read_back.hpp"
 #ifdef LAC_WITH_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <Geom_Curve.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-
 #include "lac/export/occt/occt_writer.hpp"
 #endif
 
@@ -69,28 +59,18 @@ double compare(const PlanarCurve& c, double t0, double t1, const Read& read) {
 }
 
 #ifdef LAC_WITH_OCCT
-void check_occt_shape(const TopoDS_Shape& shape, const Exported& e) {
-  int edges = 0;
-  for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
-    ++edges;
-    double f = 0, l = 0;
-    const Handle(Geom_Curve) g = BRep_Tool::Curve(TopoDS::Edge(ex.Current()), f, l);
-    ASSERT_FALSE(g.IsNull());
-    const Handle(Geom_BSplineCurve) bs = Handle(Geom_BSplineCurve)::DownCast(g);
-    ASSERT_FALSE(bs.IsNull()) << "not a B-spline: " << g->DynamicType()->Name();
-    EXPECT_EQ(bs->Degree(), e.result.curve.degree);
-    EXPECT_EQ(static_cast<size_t>(bs->NbPoles()), e.result.curve.control_points.size());
-    EXPECT_NEAR(f, 0.0, 1e-12);
-    EXPECT_NEAR(l, e.curve.length(), 1e-12);
-    const double d = compare(e.curve, f, l, [&](double t) {
-      const gp_Pnt p = bs->Value(t);
-      EXPECT_EQ(p.Z(), 0.0);
-      return std::complex<double>(p.X(), p.Y());
-    });
-    EXPECT_LE(d, e.result.info.max_deviation);
-    std::printf("read back: deviation %.3g, bound %.3g\n", d, e.result.info.max_deviation);
-  }
-  EXPECT_EQ(edges, 1);
+/// The file read back by OpenCASCADE against the LA curve at kPoints parameters.
+void check_occt_read_back(const std::string& path, ExportFormat format, const Exported& e) {
+  const test::OcctReadBack r = test::read_occt(path, format, e.result.curve.degree,
+                                               e.result.curve.control_points.size(), e.curve.length());
+  ASSERT_FALSE(r.curve.IsNull());
+  const double d = compare(e.curve, r.first, r.last, [&](double t) {
+    const gp_Pnt p = r.curve->Value(t);
+    EXPECT_EQ(p.Z(), 0.0);
+    return std::complex<double>(p.X(), p.Y());
+  });
+  EXPECT_LE(d, e.result.info.max_deviation);
+  std::printf("read back: deviation %.3g, bound %.3g\n", d, e.result.info.max_deviation);
 }
 
 TEST(ExportReadBack, StepByOpenCascade) {
@@ -98,10 +78,7 @@ TEST(ExportReadBack, StepByOpenCascade) {
   ASSERT_TRUE(e.result.usable());
   const std::string path = temp_file("curve.step");
   write_step(path, e.result.curve);
-  STEPControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-  ASSERT_GT(reader.TransferRoots(), 0);
-  check_occt_shape(reader.OneShape(), e);
+  check_occt_read_back(path, ExportFormat::step, e);
   std::filesystem::remove(path);
 }
 
@@ -113,10 +90,7 @@ TEST(ExportReadBack, IgesByOpenCascade) {
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   EXPECT_NE(text.find("     126"), std::string::npos) << "no entity 126 in the directory section";
-  IGESControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-  ASSERT_GT(reader.TransferRoots(), 0);
-  check_occt_shape(reader.OneShape(), e);
+  check_occt_read_back(path, ExportFormat::iges, e);
   std::filesystem::remove(path);
 }
 #endif
