@@ -170,21 +170,12 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
         cont = degree == 5 && g2 ? 2 : 1;
         if (!g2) all_g2 = false;
       }
-      Piece piece;
-      double moved = 0;  // displacement of the B-spline by the end data's errors (header comment)
-      if (degree == 5) {
-        piece = {p0,
-                 p0 + (h / 5) * t0,
-                 p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
-                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1,
-                 p1 - (h / 5) * t1,
-                 p1};
-        moved = std::max(dp0 + 2 * h / 5 * dt0 + h * h / 20 * dn0, dp1 + 2 * h / 5 * dt1 + h * h / 20 * dn1);
-      } else {
-        piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
-        moved = std::max(dp0 + h / 3 * dt0, dp1 + h / 3 * dt1);
-        if (p == 5) piece = detail::elevate_bezier(detail::elevate_bezier(piece)), all_g2 = false;
-      }
+      Piece piece = detail::hermite_bezier(degree, p, h, p0, t0, n0, p1, t1, n1);
+      // Displacement of the B-spline by the end data's errors (header comment).
+      const double moved =
+          degree == 5 ? std::max(dp0 + 2 * h / 5 * dt0 + h * h / 20 * dn0, dp1 + 2 * h / 5 * dt1 + h * h / 20 * dn1)
+                      : std::max(dp0 + h / 3 * dt0, dp1 + h / 3 * dt1);
+      if (degree != 5 && p == 5) all_g2 = false;
       if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
       pieces.push_back(std::move(piece));
       junction.push_back(cont);

@@ -230,18 +230,11 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
         cont = degree == 5 && g2 ? 2 : 1;  // the next part's first span is checked below
         if (!g2) all_g2 = false;
       }
-      Piece piece;
-      double moved = 0;  // bound on the curve's displacement by moved_t, moved_n (Bernstein weights ≤ 0.41)
-      if (degree == 5) {
-        piece = {p0, p0 + (h / 5) * t0, p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
-                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1, p1 - (h / 5) * t1, p1};
-        moved = 0.41 * (3 * h / 5 * moved_t + h * h / 20 * moved_n);
-      } else {
-        piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
-        moved = 4.0 / 9.0 * h / 3 * moved_t;
-        if (p == 5) piece = elevate_bezier(elevate_bezier(piece));
-        if (p == 5) all_g2 = false;
-      }
+      Piece piece = hermite_bezier(degree, p, h, p0, t0, n0, p1, t1, n1);
+      // Bound on the curve's displacement by moved_t, moved_n (Bernstein weights ≤ 0.41).
+      const double moved =
+          degree == 5 ? 0.41 * (3 * h / 5 * moved_t + h * h / 20 * moved_n) : 4.0 / 9.0 * h / 3 * moved_t;
+      if (degree != 5 && p == 5) all_g2 = false;
       // A junction is C2 only between two quintic Hermite spans sharing c'' (the previous one set it).
       if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
       pieces.push_back(std::move(piece));

@@ -138,7 +138,8 @@ void write_svg(std::ostream& out, const BSpline& b, const SvgOptions& options) {
   }
   out << "\"/>\n";
   if (options.comb) {
-    out << "<path id=\"comb-teeth\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << number17(w / 1600) << "\" d=\"";
+    out << "<path id=\"comb-teeth\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << number17(w / 1600)
+        << "\" d=\"";
     std::string tips;
     for (const CombSample& c : comb) {
       if (!std::isfinite(c.kappa)) continue;
@@ -155,8 +156,10 @@ void write_svg(std::ostream& out, const BSpline& b, const SvgOptions& options) {
 
 void write_file(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg) {
   detail::write_export_file(path, format, [&](std::ostream& out) {
-    if (format == ExportFormat::dxf) write_dxf(out, b);
-    else write_svg(out, b, svg);
+    if (format == ExportFormat::dxf)
+      write_dxf(out, b);
+    else
+      write_svg(out, b, svg);
   });
 }
 

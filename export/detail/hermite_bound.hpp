@@ -160,6 +160,24 @@ std::vector<P> elevate_bezier(const std::vector<P>& p) {
   return q;
 }
 
+/// The Bézier piece of degree p (3 or 5) of the Hermite interpolant of `degree` on a span of arc
+/// length h from (q0, t0, n0) to (q1, t1, n1): position, unit tangent c' and c'' (docs/export.md).
+/// Degree 5 uses all three; degree 3 positions and tangents only, raised to 5 when p = 5.
+template <class P>
+std::vector<P> hermite_bezier(int degree, int p, double h, const P& q0, const P& t0, const P& n0, const P& q1,
+                              const P& t1, const P& n1) {
+  if (degree == 5)
+    return {q0,
+            q0 + (h / 5) * t0,
+            q0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
+            q1 - (2 * h / 5) * t1 + (h * h / 20) * n1,
+            q1 - (h / 5) * t1,
+            q1};
+  std::vector<P> piece{q0, q0 + (h / 3) * t0, q1 - (h / 3) * t1, q1};
+  if (p == 5) piece = elevate_bezier(elevate_bezier(piece));
+  return piece;
+}
+
 /// The B-spline of consecutive Hermite Bézier pieces of degree p (3 or 5) over the parameter
 /// values knots[0] < … < knots[n] (blossoms; docs/export.md). junction[j]: the continuity after
 /// piece j (2: C2, 1: C1). Degree 3, every junction C1 (knot ×2): B0, then B1 B2 of each span,

@@ -61,8 +61,8 @@ double compare(const PlanarCurve& c, double t0, double t1, const Read& read) {
 #ifdef LAC_WITH_OCCT
 /// The file read back by OpenCASCADE against the LA curve at kPoints parameters.
 void check_occt_read_back(const std::string& path, ExportFormat format, const Exported& e) {
-  const test::OcctReadBack r = test::read_occt(path, format, e.result.curve.degree,
-                                               e.result.curve.control_points.size(), e.curve.length());
+  const test::OcctReadBack r =
+      test::read_occt(path, format, e.result.curve.degree, e.result.curve.control_points.size(), e.curve.length());
   ASSERT_FALSE(r.curve.IsNull());
   const double d = compare(e.curve, r.first, r.last, [&](double t) {
     const gp_Pnt p = r.curve->Value(t);

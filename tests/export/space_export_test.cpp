@@ -219,8 +219,7 @@ TEST(SpaceExport, EndDataEstimateHoldsNearTheIntegrationFloor) {
 /// The file read back by OpenCASCADE against the reference curve at kPoints parameters.
 void check_occt_read_back(const std::string& path, ExportFormat format, const SpaceExportResult& e) {
   const SpaceCurve& c = acceptance_curve();
-  const test::OcctReadBack r =
-      test::read_occt(path, format, e.curve.degree, e.curve.control_points.size(), c.length());
+  const test::OcctReadBack r = test::read_occt(path, format, e.curve.degree, e.curve.control_points.size(), c.length());
   ASSERT_FALSE(r.curve.IsNull());
   double z_extent = 0;
   const double d = compare(c, r.first, r.last, kPoints, [&](double t) {
