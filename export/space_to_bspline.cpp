@@ -110,7 +110,7 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   std::vector<Piece> pieces;  // in the standard-form space, mapped at the end
   std::vector<int> junction;
   std::vector<double> knots{0.0};
-  double interpolation = 0, positions = 0, deviation = 0;  // user units
+  detail::HermiteBounds totals;  // user units
   bool all_g2 = p == 5;
   const auto& cps = curve.pieces();
   // The finer and the coarser Frenet integration (header comment).
@@ -185,9 +185,7 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
       const double rounding = 64 * DBL_EPSILON * (sigma * size + extent);
       const double interp = sigma * bounds[i].value;
       const double pos = sigma * moved + rounding;
-      interpolation = std::max(interpolation, interp);
-      positions = std::max(positions, pos);
-      deviation = std::max(deviation, interp + pos);
+      totals.add_span(interp, pos);
       p0 = p1, t0 = t1, n0 = n1;
       dp0 = dp1, dt0 = dt1, dn0 = dn1;
       s_prev = s1;
@@ -196,25 +194,9 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   if (pieces.empty()) throw_input_error(kWho, "curve", "a curve of length 0 has nothing to export");
   for (Piece& pc : pieces)
     for (Vec3& x : pc) x = to_user(x);
-  BSpline3& b = r.curve;
-  b.degree = p;
   knots.back() = length;
-  detail::assemble_hermite_bspline(pieces, junction, knots, p, b.knots, b.control_points);
-  r.info.continuity = all_g2 ? "G2" : "G1";
-  r.info.spans = static_cast<long>(pieces.size());
-  r.info.interpolation = interpolation;
-  r.info.positions = positions;
-  r.info.max_deviation = deviation;
-  r.summary.error = deviation / length;
-  r.summary.error_estimate = deviation;
-  r.summary.iterations = static_cast<int>(std::min<long>(r.info.spans, std::numeric_limits<int>::max()));
-  r.summary.seconds = seconds_since(t_start);
-  if (deviation <= tol) {
-    r.conclude(Status::ok, "");
-  } else {
-    r.conclude(Status::inaccurate,
-               "deviation bound " + format_number(deviation) + " exceeds the tolerance " + format_number(tol));
-  }
+  detail::finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "deviation bound", t_start,
+                                [](const BSpline3&, SpaceExportInfo&) {});
   return r;
 }
 

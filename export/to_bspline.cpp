@@ -152,7 +152,7 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
   std::vector<Piece> pieces;
   std::vector<int> junction;
   std::vector<double> knots{0.0};
-  double interpolation = 0, positions = 0, deviation = 0;
+  HermiteBounds totals;
   bool all_g2 = p == 5;
   // The first part's first point (the later parts start where the previous one ended, below).
   SpanEndPosition first = parts.front()->position(parts.front()->w_begin());
@@ -245,9 +245,7 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
       const double rounding = 64 * DBL_EPSILON * size + h * 4 * DBL_EPSILON * (1 + seg.theta_scale());
       const double interp = bounds[i].value;
       const double pos = std::max(err0, err1) + moved + rounding;
-      interpolation = std::max(interpolation, interp);
-      positions = std::max(positions, pos);
-      deviation = std::max(deviation, interp + pos);
+      totals.add_span(interp, pos);
       p0 = p1;
       t0 = t1;
       n0 = n1;
@@ -256,26 +254,10 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
     }
   }
 
-  BSpline& b = r.curve;
-  b.degree = p;
-  const size_t n = pieces.size();
-  assemble_hermite_bspline(pieces, junction, knots, p, b.knots, b.control_points);
-  r.info.continuity = all_g2 ? "G2" : "G1";
-  r.info.spans = static_cast<long>(n);
-  r.info.interpolation = interpolation;
-  r.info.positions = positions;
-  r.info.max_deviation = deviation;
-  if (check) check(b, r.info);
-  r.summary.error = deviation / length;
-  r.summary.error_estimate = deviation;
-  r.summary.iterations = static_cast<int>(std::min<long>(static_cast<long>(n), std::numeric_limits<int>::max()));
-  r.summary.seconds = seconds_since(t_start);
-  if (deviation <= tol) {
-    r.conclude(Status::ok, "");
-  } else {
-    r.conclude(Status::inaccurate, "certified deviation " + format_number(deviation) + " exceeds the tolerance " +
-                                       format_number(tol));
-  }
+  finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "certified deviation", t_start,
+                        [&](const BSpline& b, ExportInfo& info) {
+                          if (check) check(b, info);
+                        });
   return r;
 }
 

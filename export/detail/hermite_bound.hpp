@@ -11,14 +11,18 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "lac/common/error.hpp"
 #include "lac/common/status.hpp"
+#include "lac/common/summary.hpp"
 #include "lac/export/to_bspline.hpp"
 
 namespace lac::detail {
@@ -214,6 +218,45 @@ void assemble_hermite_bspline(const std::vector<std::vector<P>>& pieces, const s
   if (p == 5) out_points.push_back(pieces.back()[4]);
   out_points.push_back(pieces.back().back());
   for (int i = 0; i <= p; ++i) out_knots.push_back(knots.back());
+}
+
+/// The largest bounds over the spans so far (absolute): interpolation, positions (end data and
+/// rounding) and their sum, the certified deviation.
+struct HermiteBounds {
+  double interpolation = 0, positions = 0, deviation = 0;
+  void add_span(double interp, double pos) {
+    interpolation = std::max(interpolation, interp);
+    positions = std::max(positions, pos);
+    deviation = std::max(deviation, interp + pos);
+  }
+};
+
+/// The end of every to_bspline: r.curve (degree p) assembled from the pieces, ExportInfo's span
+/// count, continuity and bounds, check(r.curve, r.info), the summary, and the status: ok when the
+/// deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds the tolerance <tol>").
+template <class R, class P, class Check>
+void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& pieces, const std::vector<int>& junction,
+                           const std::vector<double>& knots, bool g2, const HermiteBounds& bounds, double tol,
+                           double length, const char* what, std::chrono::steady_clock::time_point t_start,
+                           const Check& check) {
+  r.curve.degree = p;
+  assemble_hermite_bspline(pieces, junction, knots, p, r.curve.knots, r.curve.control_points);
+  r.info.continuity = g2 ? "G2" : "G1";
+  r.info.spans = static_cast<long>(pieces.size());
+  r.info.interpolation = bounds.interpolation;
+  r.info.positions = bounds.positions;
+  r.info.max_deviation = bounds.deviation;
+  check(r.curve, r.info);
+  r.summary.error = bounds.deviation / length;
+  r.summary.error_estimate = bounds.deviation;
+  r.summary.iterations = static_cast<int>(std::min<long>(r.info.spans, std::numeric_limits<int>::max()));
+  r.summary.seconds = seconds_since(t_start);
+  if (bounds.deviation <= tol) {
+    r.conclude(Status::ok, "");
+  } else {
+    r.conclude(Status::inaccurate, std::string(what) + " " + format_number(bounds.deviation) +
+                                       " exceeds the tolerance " + format_number(tol));
+  }
 }
 
 /// InputError "tolerance" unless ≥ 0 and finite, "max_spans" unless ≥ 1, "degree" unless 3 or 5.
