@@ -5,8 +5,8 @@
 // Vec3 in space): the Peano constants of the cubic and quintic Hermite interpolants, the least
 // bound over the derivative orders on a span, the splitting of a parameter interval until every
 // span's bound is below a target, majorant polynomials in bounds of derivatives, degree elevation
-// of a Bézier piece, the assembly of the Hermite Bézier pieces into one B-spline (blossoms) and the
-// check of ExportOptions. On top, for planar curves: the span sources (a curve as a sequence of
+// of a Bézier piece, the Hermite Bézier pieces and their assembly into one B-spline (blossoms), the
+// ending of an export (ExportInfo, summary, status) and the check of ExportOptions. On top, for planar curves: the span sources (a curve as a sequence of
 // smooth parts) and certified_bspline, which cuts them into spans and assembles the B-spline.
 #include <algorithm>
 #include <array>
