@@ -69,20 +69,12 @@ HermiteSpanBound span_bound(const LaSpaceCurve& law, double s0, double s1, int d
   return detail::hermite_span_bound(s1 - s0, degree, M);
 }
 
-/// The finer and the coarser Frenet integration (header comment).
-OdeOptions fine_ode() {
+/// A Frenet integration with the given method and tolerances.
+OdeOptions frenet_ode(OdeMethod method, double rtol, double atol) {
   OdeOptions o;
-  o.method = OdeMethod::magnus6;
-  o.rtol = 1e-13;
-  o.atol = 1e-14;
-  o.max_steps = 1'000'000;
-  return o;
-}
-OdeOptions coarse_ode() {
-  OdeOptions o;
-  o.method = OdeMethod::rk45;
-  o.rtol = 1e-10;
-  o.atol = 1e-11;
+  o.method = method;
+  o.rtol = rtol;
+  o.atol = atol;
   o.max_steps = 1'000'000;
   return o;
 }
@@ -94,10 +86,7 @@ using Piece = std::vector<Vec3>;
 SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& options) {
   const auto t_start = std::chrono::steady_clock::now();
   if (curve.pieces().empty()) throw_input_error(kWho, "curve", "an empty curve has nothing to export");
-  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
-    throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
-  if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
-  if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
+  detail::validate_export_options(options);
   const int p = options.degree;
   SpaceExportResult r;
   const double length = curve.length();
@@ -121,10 +110,12 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   std::vector<Piece> pieces;  // in the standard-form space, mapped at the end
   std::vector<int> junction;
   std::vector<double> knots{0.0};
-  double interpolation = 0, positions = 0, deviation = 0;  // user units
+  detail::HermiteBounds totals;  // user units
   bool all_g2 = p == 5;
   const auto& cps = curve.pieces();
-  const OdeOptions fine = fine_ode(), coarse = coarse_ode();
+  // The finer and the coarser Frenet integration (header comment).
+  const OdeOptions fine = frenet_ode(OdeMethod::magnus6, 1e-13, 1e-14),
+                   coarse = frenet_ode(OdeMethod::rk45, 1e-10, 1e-11);
   for (size_t k = 0; k < cps.size(); ++k) {
     const SpacePiece& sp = cps[k];
     const LaSpaceCurve& law = sp.law;
@@ -179,21 +170,12 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
         cont = degree == 5 && g2 ? 2 : 1;
         if (!g2) all_g2 = false;
       }
-      Piece piece;
-      double moved = 0;  // displacement of the B-spline by the end data's errors (header comment)
-      if (degree == 5) {
-        piece = {p0,
-                 p0 + (h / 5) * t0,
-                 p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
-                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1,
-                 p1 - (h / 5) * t1,
-                 p1};
-        moved = std::max(dp0 + 2 * h / 5 * dt0 + h * h / 20 * dn0, dp1 + 2 * h / 5 * dt1 + h * h / 20 * dn1);
-      } else {
-        piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
-        moved = std::max(dp0 + h / 3 * dt0, dp1 + h / 3 * dt1);
-        if (p == 5) piece = detail::elevate_bezier(detail::elevate_bezier(piece)), all_g2 = false;
-      }
+      Piece piece = detail::hermite_bezier(degree, p, h, p0, t0, n0, p1, t1, n1);
+      // Displacement of the B-spline by the end data's errors (header comment).
+      const double moved =
+          degree == 5 ? std::max(dp0 + 2 * h / 5 * dt0 + h * h / 20 * dn0, dp1 + 2 * h / 5 * dt1 + h * h / 20 * dn1)
+                      : std::max(dp0 + h / 3 * dt0, dp1 + h / 3 * dt1);
+      if (degree != 5 && p == 5) all_g2 = false;
       if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
       pieces.push_back(std::move(piece));
       junction.push_back(cont);
@@ -203,9 +185,7 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
       const double rounding = 64 * DBL_EPSILON * (sigma * size + extent);
       const double interp = sigma * bounds[i].value;
       const double pos = sigma * moved + rounding;
-      interpolation = std::max(interpolation, interp);
-      positions = std::max(positions, pos);
-      deviation = std::max(deviation, interp + pos);
+      totals.add_span(interp, pos);
       p0 = p1, t0 = t1, n0 = n1;
       dp0 = dp1, dt0 = dt1, dn0 = dn1;
       s_prev = s1;
@@ -214,25 +194,9 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   if (pieces.empty()) throw_input_error(kWho, "curve", "a curve of length 0 has nothing to export");
   for (Piece& pc : pieces)
     for (Vec3& x : pc) x = to_user(x);
-  BSpline3& b = r.curve;
-  b.degree = p;
   knots.back() = length;
-  detail::assemble_hermite_bspline(pieces, junction, knots, p, b.knots, b.control_points);
-  r.info.continuity = all_g2 ? "G2" : "G1";
-  r.info.spans = static_cast<long>(pieces.size());
-  r.info.interpolation = interpolation;
-  r.info.positions = positions;
-  r.info.max_deviation = deviation;
-  r.summary.error = deviation / length;
-  r.summary.error_estimate = deviation;
-  r.summary.iterations = static_cast<int>(std::min<long>(r.info.spans, std::numeric_limits<int>::max()));
-  r.summary.seconds = seconds_since(t_start);
-  if (deviation <= tol) {
-    r.conclude(Status::ok, "");
-  } else {
-    r.conclude(Status::inaccurate,
-               "deviation bound " + format_number(deviation) + " exceeds the tolerance " + format_number(tol));
-  }
+  detail::finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "deviation bound", t_start,
+                                [](const BSpline3&, SpaceExportInfo&) {});
   return r;
 }
 

@@ -6,10 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 
 #include "lac/common/error.hpp"
-#include "lac/export/detail/spans.hpp"
+#include "lac/export/detail/hermite_bound.hpp"
 #include "lac/export/write.hpp"
 #include "lac/integrators/quadrature.hpp"
 
@@ -18,17 +17,6 @@ namespace lac {
 namespace {
 
 constexpr const char* kWho = "to_bspline";
-
-// Peano-kernel constants of the Hermite interpolants on [0, 1]: C[m] = max over t of ∫|K_m(t, τ)| dτ,
-// where f(t) − (Hf)(t) = ∫ K_m(t, τ) f^(m)(τ) dτ, m the derivative used (tests/reference/
-// export_kernels.py; rounded up). Cubic (f, f' at both ends), m = 2, 3, 4: 0.0624987 < 1/16, 1/96,
-// 1/384 (the classical t²(1−t)²/24). Quintic (f, f', f'' at both ends), m = 3 … 6: 1/46080 at m = 6
-// (t³(1−t)³/720), 1/10240 at m = 5, 0.0061849 and 0.00067702 at m = 3, 4; no m = 2 (the
-// interpolant takes f'').
-constexpr std::array<double, 7> kCubic{0, 0, 1.0 / 16.0, 1.0 / 96.0 * (1 + 1e-9), 1.0 / 384.0 * (1 + 1e-9), 0, 0};
-constexpr std::array<double, 7> kQuintic{0, 0, 0, 0.00619, 0.000678, 0.0000977, 1.0 / 46080.0 * (1 + 1e-9)};
-// Relative slack on the derivative bounds for the rounding of q, κ and the powers at the span ends.
-constexpr double kSlack = 1e-9;
 
 /// |K^(j)(q)|, j = 0 … 4 (la_law.hpp): a power of |t| (t the plain q, or σ(1 − αq) in the offset
 /// form, where dt/dq = −σα), e^q for α = 0: monotone in |t| on each side of t = 0; +inf where a
@@ -46,116 +34,37 @@ double abs_dK(const LaLaw& law, double q, int order) {
 /// Majorants of |c^(m)|, m = 1 … 6, polynomials in k_j ≥ |κ^(j)| (j = 0 … 4): c^(m) = A_m e^{iθ} with
 /// A_1 = 1, A_{m+1} = A_m' + iκ A_m, so |A_{m+1}| ≤ D(M_m) + k_0 M_m, D the formal derivative with
 /// k_j' = k_{j+1} (all coefficients positive). E.g. M_4 = k_2 + 3 k_0 k_1 + k_0³, from
-/// c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ}.
+/// c⁗ = (iκ'' − 3κκ' − iκ³) e^{iθ}. (k_4 enters M_6 only and is never differentiated.)
 class Majorants {
  public:
-  using Exponents = std::array<int, 5>;
+  using Poly = detail::MajorantPoly<5>;
   Majorants() {
-    polys_[1][Exponents{}] = 1.0;
+    const std::array<size_t, 5> next{1, 2, 3, 4, 4};
+    polys_[1] = Poly::constant(1);
     for (int m = 1; m < 6; ++m) {
-      for (const auto& [e, c] : polys_[m]) {
-        for (int j = 0; j + 1 < 5; ++j) {
-          if (e[j] == 0) continue;
-          Exponents d = e;
-          --d[j];
-          ++d[j + 1];
-          polys_[m + 1][d] += c * e[j];
-        }
-        Exponents k = e;
-        ++k[0];
-        polys_[m + 1][k] += c;
-      }
+      polys_[m + 1] = polys_[m].derivative(next);
+      polys_[m + 1] += polys_[m].times(0);
     }
   }
-  double operator()(int m, const std::array<double, 5>& k) const {
-    double sum = 0;
-    for (const auto& [e, c] : polys_[m]) {
-      double term = c;
-      for (int j = 0; j < 5; ++j)
-        for (int i = 0; i < e[j]; ++i) term *= k[j];
-      sum += std::isnan(term) ? HUGE_VAL : term;  // 0 · inf: an unbounded factor
-    }
-    return sum;
-  }
+  double operator()(int m, const std::array<double, 5>& k) const { return polys_[m](k); }
 
  private:
-  std::array<std::map<Exponents, double>, 7> polys_;
+  std::array<Poly, 7> polys_;
 };
 
-struct SpanBound {
-  double value = HUGE_VAL;  // the interpolation bound
-  int order = 2;            // the derivative it uses (its rate in h)
-  int degree = 3;           // the Hermite interpolant: 3 (c, c') or 5 (c, c', c'')
-  std::array<double, 7> by_order{};  // the bound of each order of that degree (0: unused)
-};
-
-/// The interpolation bound of a span of length h on which k_j ≥ |κ^(j)| (j = 0 … 4), of the
-/// Hermite interpolant of `degree`; for degree 5 where a derivative it needs is unbounded (e.g.
-/// κ' at an inflection of an LA segment with α < −1), the cubic's.
-SpanBound peano_bound(const std::array<double, 5>& k, double h, int degree) {
+/// The interpolation bound of the span [w0, w1] of a source, of the Hermite interpolant of
+/// `degree`; for degree 5 where a derivative it needs is unbounded (e.g. κ' at an inflection of an
+/// LA segment with α < −1), the cubic's.
+detail::HermiteSpanBound span_bound(const detail::SpanSource& src, double w0, double w1, int degree) {
   static const Majorants majorants;
-  SpanBound best;
-  for (int d : {degree, 3}) {
-    const auto& C = d == 3 ? kCubic : kQuintic;
-    best = {HUGE_VAL, 2, d, {}};
-    for (int order = 2; order <= d + 1; ++order) {
-      if (C[order] == 0) continue;
-      const double v = C[order] * std::pow(h, order) * majorants(order, k);
-      best.by_order[order] = v;
-      if (v < best.value) best.value = v, best.order = order;
-    }
-    if (best.value < HUGE_VAL) break;
-  }
-  return best;
-}
-
-SpanBound span_bound(const detail::SpanSource& src, double w0, double w1, int degree) {
   std::array<double, 5> k = src.derivative_bounds(w0, w1);
-  for (double& x : k) x *= 1 + kSlack;
-  return peano_bound(k, src.span_length(w0, w1), degree);
-}
-
-/// Splits [u0, u1] (a source's parameter) until every span's bound is at most `target`, appending
-/// the spans' ends after u0 and their bounds. False when the cap on spans is reached.
-bool split(const detail::SpanSource& seg, double u0, double u1, int degree, double target, long cap,
-           std::vector<double>& ends, std::vector<SpanBound>& bounds) {
-  const SpanBound b = span_bound(seg, u0, u1, degree);
-  if (b.value <= target || !(u1 - u0 > 4 * DBL_EPSILON * std::max(std::abs(u0), std::abs(u1)))) {
-    if (static_cast<long>(ends.size()) >= cap) return false;
-    ends.push_back(u1);
-    bounds.push_back(b);
-    return true;
-  }
-  // Into n equal parts, n the least over the orders m of (bound_m / target)^(1/m) (bound_m ∝ h^m,
-  // the derivative bounds do not grow on a part), at least 2 and at most 64 per level.
-  double n_real = HUGE_VAL;
-  for (int m = 2; m < 7; ++m)
-    if (b.by_order[m] > 0 && std::isfinite(b.by_order[m]))
-      n_real = std::min(n_real, std::ceil(std::pow(b.by_order[m] / target, 1.0 / m) * 1.01));
-  const int n = static_cast<int>(std::clamp(std::isfinite(n_real) ? n_real : 2.0, 2.0, 64.0));
-  double a = u0;
-  for (int i = 1; i <= n; ++i) {
-    const double c = i == n ? u1 : u0 + (u1 - u0) * i / n;
-    if (!split(seg, a, c, degree, target, cap, ends, bounds)) return false;
-    a = c;
-  }
-  return true;
+  for (double& x : k) x *= 1 + detail::kDerivativeSlack;
+  std::array<double, 7> M{};
+  for (int m = 1; m <= 6; ++m) M[m] = majorants(m, k);
+  return detail::hermite_span_bound(src.span_length(w0, w1), degree, M);
 }
 
 using Piece = std::vector<std::complex<double>>;
-
-/// The same Bézier curve one degree higher (exact up to rounding).
-Piece elevate(const Piece& p) {
-  const size_t n = p.size() - 1;
-  Piece q(n + 2);
-  q[0] = p[0];
-  q[n + 1] = p[n];
-  for (size_t i = 1; i <= n; ++i) {
-    const double a = static_cast<double>(i) / static_cast<double>(n + 1);
-    q[i] = a * p[i - 1] + (1 - a) * p[i];
-  }
-  return q;
-}
 
 std::complex<double> casteljau(Piece p, double t) {
   for (size_t r = 1; r < p.size(); ++r)
@@ -243,7 +152,7 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
   std::vector<Piece> pieces;
   std::vector<int> junction;
   std::vector<double> knots{0.0};
-  double interpolation = 0, positions = 0, deviation = 0;
+  HermiteBounds totals;
   bool all_g2 = p == 5;
   // The first part's first point (the later parts start where the previous one ended, below).
   SpanEndPosition first = parts.front()->position(parts.front()->w_begin());
@@ -255,15 +164,16 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
   for (size_t k = 0; k < parts.size(); ++k) {
     const SpanSource& seg = *parts[k];
     std::vector<double> ends;
-    std::vector<SpanBound> bounds;
+    std::vector<HermiteSpanBound> bounds;
     const long cap = options.max_spans - static_cast<long>(pieces.size());
+    const auto bound = [&](double a, double b) { return span_bound(seg, a, b, p); };
     bool within_cap = true;
     double w_from = seg.w_begin();
     for (double w_break : seg.breaks()) {
-      within_cap = within_cap && split(seg, w_from, w_break, p, target, cap, ends, bounds);
+      within_cap = within_cap && split_hermite_spans(w_from, w_break, target, cap, bound, ends, bounds);
       w_from = w_break;
     }
-    within_cap = within_cap && split(seg, w_from, seg.w_end(), p, target, cap, ends, bounds);
+    within_cap = within_cap && split_hermite_spans(w_from, seg.w_end(), target, cap, bound, ends, bounds);
     if (!within_cap)
       return fail(Status::max_iterations, "more than max_spans = " + std::to_string(options.max_spans) +
                                               " spans needed for tolerance " + format_number(tol));
@@ -292,7 +202,7 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
       std::complex<double> t1 = std::polar(1.0, seg.theta(u1));
       std::complex<double> n1 = std::complex<double>(0, seg.kappa(u1)) * t1;
       const int degree = bounds[i].degree;
-      const SpanBound next_bound = i + 1 < bounds.size() ? bounds[i + 1] : SpanBound{};
+      const HermiteSpanBound next_bound = i + 1 < bounds.size() ? bounds[i + 1] : HermiteSpanBound{};
       int cont = degree == 5 && next_bound.degree == 5 ? 2 : 1;
       double moved_t = 0, moved_n = 0;  // how far the end's tangent and c'' are moved (joint data)
       if (last && k + 1 < parts.size()) {
@@ -320,18 +230,11 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
         cont = degree == 5 && g2 ? 2 : 1;  // the next part's first span is checked below
         if (!g2) all_g2 = false;
       }
-      Piece piece;
-      double moved = 0;  // bound on the curve's displacement by moved_t, moved_n (Bernstein weights ≤ 0.41)
-      if (degree == 5) {
-        piece = {p0, p0 + (h / 5) * t0, p0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
-                 p1 - (2 * h / 5) * t1 + (h * h / 20) * n1, p1 - (h / 5) * t1, p1};
-        moved = 0.41 * (3 * h / 5 * moved_t + h * h / 20 * moved_n);
-      } else {
-        piece = {p0, p0 + (h / 3) * t0, p1 - (h / 3) * t1, p1};
-        moved = 4.0 / 9.0 * h / 3 * moved_t;
-        if (p == 5) piece = elevate(elevate(piece));
-        if (p == 5) all_g2 = false;
-      }
+      Piece piece = hermite_bezier(degree, p, h, p0, t0, n0, p1, t1, n1);
+      // Bound on the curve's displacement by moved_t, moved_n (Bernstein weights ≤ 0.41).
+      const double moved =
+          degree == 5 ? 0.41 * (3 * h / 5 * moved_t + h * h / 20 * moved_n) : 4.0 / 9.0 * h / 3 * moved_t;
+      if (degree != 5 && p == 5) all_g2 = false;
       // A junction is C2 only between two quintic Hermite spans sharing c'' (the previous one set it).
       if (!pieces.empty() && junction.back() == 2 && degree != 5) junction.back() = 1;
       pieces.push_back(std::move(piece));
@@ -342,9 +245,7 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
       const double rounding = 64 * DBL_EPSILON * size + h * 4 * DBL_EPSILON * (1 + seg.theta_scale());
       const double interp = bounds[i].value;
       const double pos = std::max(err0, err1) + moved + rounding;
-      interpolation = std::max(interpolation, interp);
-      positions = std::max(positions, pos);
-      deviation = std::max(deviation, interp + pos);
+      totals.add_span(interp, pos);
       p0 = p1;
       t0 = t1;
       n0 = n1;
@@ -353,57 +254,10 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
     }
   }
 
-  // The B-spline (blossoms of consecutive knots; docs/export.md): degree 3, every junction C1 (knot
-  // ×2): B0, then B1 B2 of each span, then the end. Degree 5: B0 B1, then B2 B3 of each span and
-  // at a junction C2 (knot ×3) the point f(a, b, b, b, c) = B3 + (c − a)/(b − a) (B4 − B3), at a
-  // junction C1 (knot ×4) B4 and the next span's B1; then B4 B5 of the last span.
-  BSpline& b = r.curve;
-  b.degree = p;
-  const size_t n = pieces.size();
-  for (int i = 0; i <= p; ++i) b.knots.push_back(0.0);
-  b.control_points.push_back(pieces[0][0]);
-  if (p == 5) b.control_points.push_back(pieces[0][1]);
-  for (size_t j = 0; j < n; ++j) {
-    const Piece& pc = pieces[j];
-    if (p == 3) {
-      b.control_points.push_back(pc[1]);
-      b.control_points.push_back(pc[2]);
-    } else {
-      b.control_points.push_back(pc[2]);
-      b.control_points.push_back(pc[3]);
-    }
-    if (j + 1 == n) break;
-    const int multiplicity = p - (p == 5 ? junction[j] : 1);
-    for (int i = 0; i < multiplicity; ++i) b.knots.push_back(knots[j + 1]);
-    if (p == 5) {
-      if (junction[j] == 2) {
-        const double a = knots[j], bb = knots[j + 1], c = knots[j + 2];
-        b.control_points.push_back(pc[3] + ((c - a) / (bb - a)) * (pc[4] - pc[3]));
-      } else {
-        b.control_points.push_back(pc[4]);
-        b.control_points.push_back(pieces[j + 1][1]);
-      }
-    }
-  }
-  if (p == 5) b.control_points.push_back(pieces.back()[4]);
-  b.control_points.push_back(pieces.back().back());
-  for (int i = 0; i <= p; ++i) b.knots.push_back(length);
-  r.info.continuity = all_g2 ? "G2" : "G1";
-  r.info.spans = static_cast<long>(n);
-  r.info.interpolation = interpolation;
-  r.info.positions = positions;
-  r.info.max_deviation = deviation;
-  if (check) check(b, r.info);
-  r.summary.error = deviation / length;
-  r.summary.error_estimate = deviation;
-  r.summary.iterations = static_cast<int>(std::min<long>(static_cast<long>(n), std::numeric_limits<int>::max()));
-  r.summary.seconds = seconds_since(t_start);
-  if (deviation <= tol) {
-    r.conclude(Status::ok, "");
-  } else {
-    r.conclude(Status::inaccurate, "certified deviation " + format_number(deviation) + " exceeds the tolerance " +
-                                       format_number(tol));
-  }
+  finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "certified deviation", t_start,
+                        [&](const BSpline& b, ExportInfo& info) {
+                          if (check) check(b, info);
+                        });
   return r;
 }
 

@@ -22,7 +22,7 @@
 // gaps (position, tangent, curvature) and rounding. The B-spline is within max_deviation of the
 // curve at the same arc length, hence in Hausdorff distance.
 //
-// An arc of a quadratic LA curve (003) is exported by the same spans (export/detail/spans.hpp);
+// An arc of a quadratic LA curve (003) is exported by the same spans (export/detail/hermite_bound.hpp);
 // its |κ^(j)| come from closed forms in u = log κ bounded on each span (to_bspline_quadratic.cpp).
 //
 //   auto r = lac::to_bspline(curve, {.tolerance = 1e-6});

@@ -1,5 +1,5 @@
 // to_bspline for an arc of a quadratic LA curve (003): the span machinery of to_bspline.cpp
-// (export/detail/spans.hpp) with the curve's own bounds on the curvature's derivatives.
+// (export/detail/hermite_bound.hpp) with the curve's own bounds on the curvature's derivatives.
 //
 // The derivatives of κ in arc length. 003's Eq. (4.3), ds/dκ = −κ^(−α + γ log κ − 1)/Λ, is in
 // u = log κ: ds/du = −e^(E(u))/Λ with E(u) = γu² − αu, so d/ds = −Λ e^(−E(u)) d/du and, by
@@ -24,7 +24,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/curves/quadratic/quadratic_position.hpp"
-#include "lac/export/detail/spans.hpp"
+#include "lac/export/detail/hermite_bound.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
 

@@ -1,24 +1,16 @@
 #include "lac/export/write.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 
 #include "lac/common/error.hpp"
+#include "lac/export/detail/write_text.hpp"
 
 namespace lac {
 
-namespace {
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-}  // namespace
+using detail::number17;
 
 ExportFormat export_format_from_path(const std::string& path, const char* parameter, const char* function) {
   const size_t dot = path.find_last_of('.');
@@ -69,40 +61,9 @@ std::vector<std::vector<std::complex<double>>> bezier_pieces(const BSpline& b) {
 
 void write_dxf(std::ostream& out, const BSpline& b) {
   b.validate();
-  auto g = [&out](int code, const std::string& value) { out << code << "\n" << value << "\n"; };
-  g(0, "SECTION");
-  g(2, "HEADER");
-  g(9, "$ACADVER");
-  g(1, "AC1015");
-  g(9, "$INSUNITS");
-  g(70, "0");
-  g(0, "ENDSEC");
-  g(0, "SECTION");
-  g(2, "ENTITIES");
-  g(0, "SPLINE");
-  g(5, "100");
-  g(100, "AcDbEntity");
-  g(8, "0");
-  g(100, "AcDbSpline");
-  g(210, "0.0");
-  g(220, "0.0");
-  g(230, "1.0");
-  g(70, std::to_string(8 + (b.rational() ? 4 : 0)));  // planar (+ rational)
-  g(71, std::to_string(b.degree));
-  g(72, std::to_string(b.knots.size()));
-  g(73, std::to_string(b.control_points.size()));
-  g(74, "0");
-  g(42, "1e-10");
-  g(43, "1e-10");
-  for (double k : b.knots) g(40, num(k));
-  for (size_t i = 0; i < b.control_points.size(); ++i) {
-    if (b.rational()) g(41, num(b.weights[i]));
-    g(10, num(b.control_points[i].real()));
-    g(20, num(b.control_points[i].imag()));
-    g(30, "0.0");
-  }
-  g(0, "ENDSEC");
-  g(0, "EOF");
+  detail::write_dxf_spline(out, true, b.degree, b.knots, b.weights, b.control_points, [](std::complex<double> c) {
+    return std::array<std::string, 3>{number17(c.real()), number17(c.imag()), "0.0"};
+  });
 }
 
 namespace {
@@ -159,50 +120,47 @@ void write_svg(std::ostream& out, const BSpline& b, const SvgOptions& options) {
   const double margin = 0.05 * std::max({x1 - x0, y1 - y0, 1e-300});
   const double w = x1 - x0 + 2 * margin, h = y1 - y0 + 2 * margin;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"" << num(800 * h / w) << "\" viewBox=\""
-      << num(x0 - margin) << " " << num(-(y1 + margin)) << " " << num(w) << " " << num(h) << "\">\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"" << number17(800 * h / w) << "\" viewBox=\""
+      << number17(x0 - margin) << " " << number17(-(y1 + margin)) << " " << number17(w) << " " << number17(h) << "\">\n"
       << "<!-- lac: an LA curve as cubic Bézier commands in its own coordinates (y up; the group flips it) -->\n";
   if (options.comb)
     out << "<desc>Curvature comb of the cubic B-spline (its own curvature): " << options.comb_teeth_per_piece + 1
         << " teeth per Bezier piece at t = i/" << options.comb_teeth_per_piece
         << ", each from B(t) to B(t) - c kappa(t) N(t), N the unit left normal, kappa left turn positive (teeth away "
            "from the centre of curvature), c = "
-        << num(scale) << " so that the longest tooth is " << kCombFraction
+        << number17(scale) << " so that the longest tooth is " << kCombFraction
         << " of the control points' bounding-box diagonal</desc>\n";
-  out << "<g transform=\"scale(1,-1)\">\n<path fill=\"none\" stroke=\"black\" stroke-width=\"" << num(w / 400)
-      << "\" d=\"M " << num(pieces.front()[0].real()) << " " << num(pieces.front()[0].imag());
+  out << "<g transform=\"scale(1,-1)\">\n<path fill=\"none\" stroke=\"black\" stroke-width=\"" << number17(w / 400)
+      << "\" d=\"M " << number17(pieces.front()[0].real()) << " " << number17(pieces.front()[0].imag());
   for (const auto& pc : pieces) {
     out << "\nC";
-    for (int i = 1; i <= 3; ++i) out << " " << num(pc[i].real()) << " " << num(pc[i].imag());
+    for (int i = 1; i <= 3; ++i) out << " " << number17(pc[i].real()) << " " << number17(pc[i].imag());
   }
   out << "\"/>\n";
   if (options.comb) {
-    out << "<path id=\"comb-teeth\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << num(w / 1600) << "\" d=\"";
+    out << "<path id=\"comb-teeth\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << number17(w / 1600)
+        << "\" d=\"";
     std::string tips;
     for (const CombSample& c : comb) {
       if (!std::isfinite(c.kappa)) continue;
       const std::complex<double> tip = c.point - scale * c.kappa * c.normal;
-      out << "M " << num(c.point.real()) << " " << num(c.point.imag()) << " L " << num(tip.real()) << " "
-          << num(tip.imag()) << "\n";
-      tips += num(tip.real()) + "," + num(tip.imag()) + " ";
+      out << "M " << number17(c.point.real()) << " " << number17(c.point.imag()) << " L " << number17(tip.real()) << " "
+          << number17(tip.imag()) << "\n";
+      tips += number17(tip.real()) + "," + number17(tip.imag()) + " ";
     }
-    out << "\"/>\n<polyline id=\"comb-tips\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << num(w / 800)
+    out << "\"/>\n<polyline id=\"comb-tips\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"" << number17(w / 800)
         << "\" points=\"" << tips << "\"/>\n";
   }
   out << "</g>\n</svg>\n";
 }
 
 void write_file(const std::string& path, ExportFormat format, const BSpline& b, const SvgOptions& svg) {
-  if (format == ExportFormat::step || format == ExportFormat::iges)
-    throw_input_error("write_file", "export",
-                      "'" + path + "': " + to_string(format) +
-                          " is written through OpenCASCADE (export/occt/occt_writer.hpp, lac::export)");
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': cannot open the file for writing");
-  if (format == ExportFormat::dxf) write_dxf(out, b);
-  else write_svg(out, b, svg);
-  out.flush();
-  if (!out) throw_input_error("write_file", "export", "'" + path + "': writing failed");
+  detail::write_export_file(path, format, [&](std::ostream& out) {
+    if (format == ExportFormat::dxf)
+      write_dxf(out, b);
+    else
+      write_svg(out, b, svg);
+  });
 }
 
 }  // namespace lac

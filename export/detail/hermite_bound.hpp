@@ -1,16 +1,29 @@
 #pragma once
-// Internal: the pieces of the certified Hermite export (export/to_bspline.hpp) that do not depend on
-// the curve's dimension, shared by the planar and the space export (export/space_to_bspline.hpp):
-// the Peano constants of the cubic and quintic Hermite interpolants, the least bound over the
-// derivative orders on a span, the splitting of a parameter interval until every span's bound is
-// below a target, majorant polynomials in bounds of derivatives, degree elevation of a Bézier
-// piece and the assembly of the Hermite Bézier pieces into one B-spline (blossoms).
+// Internal: the one implementation of the certified Hermite export, used by every to_bspline
+// (export/to_bspline.hpp: PlanarCurve and the quadratic LA curve; export/space_to_bspline.hpp:
+// SpaceCurve). Independent of the dimension (the point type P: std::complex<double> in the plane,
+// Vec3 in space): the Peano constants of the cubic and quintic Hermite interpolants, the least
+// bound over the derivative orders on a span, the splitting of a parameter interval until every
+// span's bound is below a target, majorant polynomials in bounds of derivatives, degree elevation
+// of a Bézier piece, the Hermite Bézier pieces and their assembly into one B-spline (blossoms), the
+// ending of an export (ExportInfo, summary, status) and the check of ExportOptions. On top, for planar curves: the span sources (a curve as a sequence of
+// smooth parts) and certified_bspline, which cuts them into spans and assembles the B-spline.
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
+#include <complex>
+#include <functional>
+#include <limits>
 #include <map>
+#include <string>
 #include <vector>
+
+#include "lac/common/error.hpp"
+#include "lac/common/status.hpp"
+#include "lac/common/summary.hpp"
+#include "lac/export/to_bspline.hpp"
 
 namespace lac::detail {
 
@@ -151,6 +164,24 @@ std::vector<P> elevate_bezier(const std::vector<P>& p) {
   return q;
 }
 
+/// The Bézier piece of degree p (3 or 5) of the Hermite interpolant of `degree` on a span of arc
+/// length h from (q0, t0, n0) to (q1, t1, n1): position, unit tangent c' and c'' (docs/export.md).
+/// Degree 5 uses all three; degree 3 positions and tangents only, raised to 5 when p = 5.
+template <class P>
+std::vector<P> hermite_bezier(int degree, int p, double h, const P& q0, const P& t0, const P& n0, const P& q1,
+                              const P& t1, const P& n1) {
+  if (degree == 5)
+    return {q0,
+            q0 + (h / 5) * t0,
+            q0 + (2 * h / 5) * t0 + (h * h / 20) * n0,
+            q1 - (2 * h / 5) * t1 + (h * h / 20) * n1,
+            q1 - (h / 5) * t1,
+            q1};
+  std::vector<P> piece{q0, q0 + (h / 3) * t0, q1 - (h / 3) * t1, q1};
+  if (p == 5) piece = elevate_bezier(elevate_bezier(piece));
+  return piece;
+}
+
 /// The B-spline of consecutive Hermite Bézier pieces of degree p (3 or 5) over the parameter
 /// values knots[0] < … < knots[n] (blossoms; docs/export.md). junction[j]: the continuity after
 /// piece j (2: C2, 1: C1). Degree 3, every junction C1 (knot ×2): B0, then B1 B2 of each span,
@@ -188,5 +219,110 @@ void assemble_hermite_bspline(const std::vector<std::vector<P>>& pieces, const s
   out_points.push_back(pieces.back().back());
   for (int i = 0; i <= p; ++i) out_knots.push_back(knots.back());
 }
+
+/// The largest bounds over the spans so far (absolute): interpolation, positions (end data and
+/// rounding) and their sum, the certified deviation.
+struct HermiteBounds {
+  double interpolation = 0, positions = 0, deviation = 0;
+  void add_span(double interp, double pos) {
+    interpolation = std::max(interpolation, interp);
+    positions = std::max(positions, pos);
+    deviation = std::max(deviation, interp + pos);
+  }
+};
+
+/// The end of every to_bspline: r.curve (degree p) assembled from the pieces, ExportInfo's span
+/// count, continuity and bounds, check(r.curve, r.info), the summary, and the status: ok when the
+/// deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds the tolerance <tol>").
+template <class R, class P, class Check>
+void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& pieces, const std::vector<int>& junction,
+                           const std::vector<double>& knots, bool g2, const HermiteBounds& bounds, double tol,
+                           double length, const char* what, std::chrono::steady_clock::time_point t_start,
+                           const Check& check) {
+  r.curve.degree = p;
+  assemble_hermite_bspline(pieces, junction, knots, p, r.curve.knots, r.curve.control_points);
+  r.info.continuity = g2 ? "G2" : "G1";
+  r.info.spans = static_cast<long>(pieces.size());
+  r.info.interpolation = bounds.interpolation;
+  r.info.positions = bounds.positions;
+  r.info.max_deviation = bounds.deviation;
+  check(r.curve, r.info);
+  r.summary.error = bounds.deviation / length;
+  r.summary.error_estimate = bounds.deviation;
+  r.summary.iterations = static_cast<int>(std::min<long>(r.info.spans, std::numeric_limits<int>::max()));
+  r.summary.seconds = seconds_since(t_start);
+  if (bounds.deviation <= tol) {
+    r.conclude(Status::ok, "");
+  } else {
+    r.conclude(Status::inaccurate, std::string(what) + " " + format_number(bounds.deviation) +
+                                       " exceeds the tolerance " + format_number(tol));
+  }
+}
+
+/// InputError "tolerance" unless ≥ 0 and finite, "max_spans" unless ≥ 1, "degree" unless 3 or 5.
+void validate_export_options(const ExportOptions& options);
+
+// ---- Planar curves: span sources (export/to_bspline.cpp, export/to_bspline_quadratic.cpp) ----
+
+/// A position at a span end with its error: the larger of two independent quadratures' estimates
+/// and their difference (0 for a point known exactly, e.g. a segment's start).
+struct SpanEndPosition {
+  std::complex<double> point;
+  double error = 0;
+  long evaluations = 0;
+  Status status = Status::ok;
+  std::string message;
+};
+
+/// One smooth part of a curve, in a parameter w of its own on [w_begin(), w_end()], increasing
+/// with the arc length (u for a LaSegment, s for a quadratic LA curve).
+class SpanSource {
+ public:
+  virtual ~SpanSource() = default;
+  virtual double w_begin() const = 0;
+  virtual double w_end() const = 0;
+  /// w strictly inside where a span must end (an inflection), increasing.
+  virtual std::vector<double> breaks() const = 0;
+  /// Arc length from w_begin() to w (the part's length at w_end(), exactly).
+  virtual double arc(double w) const = 0;
+  /// Arc length of [w0, w1].
+  virtual double span_length(double w0, double w1) const = 0;
+  /// k_j ≥ |κ^(j)(s)| (j = 0 … 4, derivatives in arc length) on [w0, w1], which holds no break;
+  /// +inf where a derivative is unbounded.
+  virtual std::array<double, 5> derivative_bounds(double w0, double w1) const = 0;
+  virtual double theta(double w) const = 0;
+  virtual double kappa(double w) const = 0;  ///< signed
+  virtual SpanEndPosition position(double w) const = 0;
+  /// max |θ| on the part (for the rounding of the closed-form θ).
+  virtual double theta_scale() const = 0;
+};
+
+/// ExportInfo's curvature check on the assembled B-spline (run before the status is concluded).
+using CurvatureCheck = std::function<void(const BSpline&, ExportInfo&)>;
+
+/// The certified B-spline of the parts in order; starts[k] is the arc length of part k's start
+/// along the whole curve (starts.size() = parts.size() + 1, the last the whole length). Consecutive
+/// parts meet at the next part's start point and tangent (and its curvature when they agree, G2),
+/// the gap entering the bound. `extent`: the size of the coordinates (for rounding). Everything
+/// of ExportInfo but the curvature check (`check`) is filled in; options are validated by the caller.
+ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
+                               double extent, const ExportOptions& options, const CurvatureCheck& check);
+
+/// k_j ≥ |κ^(j)(s)| (j = 0 … 4) on [s0, s1] of a quadratic LA curve, which holds no inflection
+/// inside (to_bspline_quadratic.cpp derives them from 003's Eq. (4.3)).
+std::array<double, 5> quadratic_derivative_bounds(const QuadraticLaCurve& c, double s0, double s1);
+
+/// A stretch of the curve along which the LA curvature is monotone, for the curvature check:
+/// its end (arc length along the whole curve), its curvature at both ends and the curve's own
+/// curvature jump at its start (0 for the first and at a G2 joint).
+struct MonotoneStretch {
+  double end = 0;
+  double kappa_start = 0, kappa_end = 0;
+  double jump_before = 0;
+};
+
+/// ExportInfo's curvature check (to_bspline.hpp curvature_monotone) on given stretches.
+bool curvature_monotone(const BSpline& b, const std::vector<MonotoneStretch>& stretches, double length,
+                        long* monotone_segments, double* max_jump, long* constant_segments);
 
 }  // namespace lac::detail

@@ -11,7 +11,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/curves/quadratic/quadratic_position.hpp"
-#include "lac/export/detail/spans.hpp"
+#include "lac/export/detail/hermite_bound.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/geometry/quadratic_geometry.hpp"
 

@@ -11,17 +11,8 @@
 #include "lac/constructions/g2_hermite.hpp"
 #include "lac/export/to_bspline.hpp"
 #include "lac/export/write.hpp"
+#include "tests/export/read_back.hpp"
 #ifdef LAC_WITH_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <Geom_Curve.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-
 #include "lac/export/occt/occt_writer.hpp"
 #endif
 
@@ -68,28 +59,18 @@ double compare(const PlanarCurve& c, double t0, double t1, const Read& read) {
 }
 
 #ifdef LAC_WITH_OCCT
-void check_occt_shape(const TopoDS_Shape& shape, const Exported& e) {
-  int edges = 0;
-  for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
-    ++edges;
-    double f = 0, l = 0;
-    const Handle(Geom_Curve) g = BRep_Tool::Curve(TopoDS::Edge(ex.Current()), f, l);
-    ASSERT_FALSE(g.IsNull());
-    const Handle(Geom_BSplineCurve) bs = Handle(Geom_BSplineCurve)::DownCast(g);
-    ASSERT_FALSE(bs.IsNull()) << "not a B-spline: " << g->DynamicType()->Name();
-    EXPECT_EQ(bs->Degree(), e.result.curve.degree);
-    EXPECT_EQ(static_cast<size_t>(bs->NbPoles()), e.result.curve.control_points.size());
-    EXPECT_NEAR(f, 0.0, 1e-12);
-    EXPECT_NEAR(l, e.curve.length(), 1e-12);
-    const double d = compare(e.curve, f, l, [&](double t) {
-      const gp_Pnt p = bs->Value(t);
-      EXPECT_EQ(p.Z(), 0.0);
-      return std::complex<double>(p.X(), p.Y());
-    });
-    EXPECT_LE(d, e.result.info.max_deviation);
-    std::printf("read back: deviation %.3g, bound %.3g\n", d, e.result.info.max_deviation);
-  }
-  EXPECT_EQ(edges, 1);
+/// The file read back by OpenCASCADE against the LA curve at kPoints parameters.
+void check_occt_read_back(const std::string& path, ExportFormat format, const Exported& e) {
+  const test::OcctReadBack r =
+      test::read_occt(path, format, e.result.curve.degree, e.result.curve.control_points.size(), e.curve.length());
+  ASSERT_FALSE(r.curve.IsNull());
+  const double d = compare(e.curve, r.first, r.last, [&](double t) {
+    const gp_Pnt p = r.curve->Value(t);
+    EXPECT_EQ(p.Z(), 0.0);
+    return std::complex<double>(p.X(), p.Y());
+  });
+  EXPECT_LE(d, e.result.info.max_deviation);
+  std::printf("read back: deviation %.3g, bound %.3g\n", d, e.result.info.max_deviation);
 }
 
 TEST(ExportReadBack, StepByOpenCascade) {
@@ -97,10 +78,7 @@ TEST(ExportReadBack, StepByOpenCascade) {
   ASSERT_TRUE(e.result.usable());
   const std::string path = temp_file("curve.step");
   write_step(path, e.result.curve);
-  STEPControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-  ASSERT_GT(reader.TransferRoots(), 0);
-  check_occt_shape(reader.OneShape(), e);
+  check_occt_read_back(path, ExportFormat::step, e);
   std::filesystem::remove(path);
 }
 
@@ -112,10 +90,7 @@ TEST(ExportReadBack, IgesByOpenCascade) {
   std::ifstream in(path);
   std::string text((std::istreambuf_iterator<char>(in)), {});
   EXPECT_NE(text.find("     126"), std::string::npos) << "no entity 126 in the directory section";
-  IGESControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-  ASSERT_GT(reader.TransferRoots(), 0);
-  check_occt_shape(reader.OneShape(), e);
+  check_occt_read_back(path, ExportFormat::iges, e);
   std::filesystem::remove(path);
 }
 #endif
@@ -125,28 +100,14 @@ TEST(ExportReadBack, DxfByEzdxf) {
   ASSERT_TRUE(e.result.usable());
   const std::string path = temp_file("curve.dxf");
   write_file(path, ExportFormat::dxf, e.result.curve);
-  const std::string cmd = std::string("/usr/bin/python3 ") + LAC_SOURCE_DIR + "/tests/export/read_dxf.py " + path + " " +
-                          std::to_string(kPoints);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  ASSERT_EQ(pclose(pipe), 0) << out;
-  std::istringstream in(out);
-  int degree = 0;
-  size_t control_points = 0;
-  in >> degree >> control_points;
-  EXPECT_EQ(degree, 5);
-  EXPECT_EQ(control_points, e.result.curve.control_points.size());
-  double t, x, y, worst = 0;
-  int points = 0;
-  while (in >> t >> x >> y) {
-    worst = std::max(worst, std::abs(position_at(e.curve, std::clamp(t, 0.0, e.curve.length())).point.position -
-                                     std::complex<double>(x, y)));
-    ++points;
-  }
-  EXPECT_EQ(points, kPoints);
+  const test::DxfReadBack d = test::read_dxf(path, kPoints, 2);
+  EXPECT_EQ(d.degree, 5);
+  EXPECT_EQ(d.control_points, e.result.curve.control_points.size());
+  EXPECT_EQ(d.t.size(), static_cast<size_t>(kPoints));
+  double worst = 0;
+  for (size_t i = 0; i < d.t.size(); ++i)
+    worst = std::max(worst, std::abs(position_at(e.curve, std::clamp(d.t[i], 0.0, e.curve.length())).point.position -
+                                     std::complex<double>(d.point[i][0], d.point[i][1])));
   EXPECT_LE(worst, e.result.info.max_deviation);
   std::printf("ezdxf: deviation %.3g, bound %.3g\n", worst, e.result.info.max_deviation);
   std::filesystem::remove(path);

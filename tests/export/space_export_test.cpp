@@ -16,18 +16,9 @@
 #include "lac/export/export_space_curve.hpp"
 #include "lac/export/space_to_bspline.hpp"
 #include "lac/export/write3.hpp"
+#include "tests/export/read_back.hpp"
 #include "tests/support/input_error.hpp"
 #ifdef LAC_WITH_OCCT
-#include <BRep_Tool.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <Geom_Curve.hxx>
-#include <IFSelect_ReturnStatus.hxx>
-#include <IGESControl_Reader.hxx>
-#include <STEPControl_Reader.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-
 #include "lac/export/occt/occt_writer.hpp"
 #endif
 
@@ -225,31 +216,20 @@ TEST(SpaceExport, EndDataEstimateHoldsNearTheIntegrationFloor) {
 }
 
 #ifdef LAC_WITH_OCCT
-void check_occt_shape(const TopoDS_Shape& shape, const SpaceExportResult& e) {
+/// The file read back by OpenCASCADE against the reference curve at kPoints parameters.
+void check_occt_read_back(const std::string& path, ExportFormat format, const SpaceExportResult& e) {
   const SpaceCurve& c = acceptance_curve();
-  int edges = 0;
-  for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
-    ++edges;
-    double f = 0, l = 0;
-    const Handle(Geom_Curve) g = BRep_Tool::Curve(TopoDS::Edge(ex.Current()), f, l);
-    ASSERT_FALSE(g.IsNull());
-    const Handle(Geom_BSplineCurve) bs = Handle(Geom_BSplineCurve)::DownCast(g);
-    ASSERT_FALSE(bs.IsNull()) << "not a B-spline: " << g->DynamicType()->Name();
-    EXPECT_EQ(bs->Degree(), e.curve.degree);
-    EXPECT_EQ(static_cast<size_t>(bs->NbPoles()), e.curve.control_points.size());
-    EXPECT_NEAR(f, 0.0, 1e-12);
-    EXPECT_NEAR(l, c.length(), 1e-12);
-    double z_extent = 0;
-    const double d = compare(c, f, l, kPoints, [&](double t) {
-      const gp_Pnt p = bs->Value(t);
-      z_extent = std::max(z_extent, std::abs(p.Z()));
-      return Eigen::Vector3d(p.X(), p.Y(), p.Z());
-    });
-    EXPECT_GT(z_extent, 1e-3);  // a space curve, not its projection
-    EXPECT_LE(d, e.info.max_deviation);
-    std::printf("read back: deviation %.3g, bound %.3g\n", d, e.info.max_deviation);
-  }
-  EXPECT_EQ(edges, 1);
+  const test::OcctReadBack r = test::read_occt(path, format, e.curve.degree, e.curve.control_points.size(), c.length());
+  ASSERT_FALSE(r.curve.IsNull());
+  double z_extent = 0;
+  const double d = compare(c, r.first, r.last, kPoints, [&](double t) {
+    const gp_Pnt p = r.curve->Value(t);
+    z_extent = std::max(z_extent, std::abs(p.Z()));
+    return Eigen::Vector3d(p.X(), p.Y(), p.Z());
+  });
+  EXPECT_GT(z_extent, 1e-3);  // a space curve, not its projection
+  EXPECT_LE(d, e.info.max_deviation);
+  std::printf("read back: deviation %.3g, bound %.3g\n", d, e.info.max_deviation);
 }
 
 TEST(SpaceExportReadBack, StepByOpenCascade) {
@@ -258,10 +238,7 @@ TEST(SpaceExportReadBack, StepByOpenCascade) {
     ASSERT_TRUE(e.usable());
     const std::string path = temp_file("curve.step");
     write_step(path, e.curve);
-    STEPControl_Reader reader;
-    ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-    ASSERT_GT(reader.TransferRoots(), 0);
-    check_occt_shape(reader.OneShape(), e);
+    check_occt_read_back(path, ExportFormat::step, e);
     std::filesystem::remove(path);
   }
 }
@@ -271,10 +248,7 @@ TEST(SpaceExportReadBack, IgesByOpenCascade) {
   ASSERT_TRUE(e.usable());
   const std::string path = temp_file("curve.iges");
   write_any(path, ExportFormat::iges, e.curve);
-  IGESControl_Reader reader;
-  ASSERT_EQ(reader.ReadFile(path.c_str()), IFSelect_RetDone);
-  ASSERT_GT(reader.TransferRoots(), 0);
-  check_occt_shape(reader.OneShape(), e);
+  check_occt_read_back(path, ExportFormat::iges, e);
   std::filesystem::remove(path);
 }
 #endif
@@ -285,27 +259,15 @@ TEST(SpaceExportReadBack, DxfByEzdxf) {
   ASSERT_TRUE(e.usable());
   const std::string path = temp_file("curve.dxf");
   write_file(path, ExportFormat::dxf, e.curve);
-  const std::string cmd = std::string("/usr/bin/python3 ") + LAC_SOURCE_DIR + "/tests/export/read_dxf3.py " + path +
-                          " " + std::to_string(kPoints);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  ASSERT_EQ(pclose(pipe), 0) << out;
-  std::istringstream in(out);
-  int degree = 0;
-  size_t control_points = 0;
-  in >> degree >> control_points;
-  EXPECT_EQ(degree, 5);
-  EXPECT_EQ(control_points, e.curve.control_points.size());
-  std::vector<double> ts;
-  std::vector<Eigen::Vector3d> ps;
-  double t, x, y, z;
-  while (in >> t >> x >> y >> z) ts.push_back(t), ps.emplace_back(x, y, z);
-  ASSERT_EQ(ts.size(), static_cast<size_t>(kPoints));
+  const test::DxfReadBack r = test::read_dxf(path, kPoints, 3);
+  EXPECT_EQ(r.degree, 5);
+  EXPECT_EQ(r.control_points, e.curve.control_points.size());
+  ASSERT_EQ(r.t.size(), static_cast<size_t>(kPoints));
   size_t i = 0;
-  const double d = compare(c, ts.front(), ts.back(), kPoints, [&](double) { return ps[i++]; });
+  const double d = compare(c, r.t.front(), r.t.back(), kPoints, [&](double) {
+    const auto& p = r.point[i++];
+    return Eigen::Vector3d(p[0], p[1], p[2]);
+  });
   EXPECT_LE(d, e.info.max_deviation);
   std::printf("ezdxf: deviation %.3g, bound %.3g\n", d, e.info.max_deviation);
   std::filesystem::remove(path);
