@@ -204,7 +204,7 @@ struct PairSolver {
   // Newton on p_a(u) − p_b(v) = 0, its steps kept in the pair's box: true when it converged to a
   // root there (the pair holds at most one: transversal). Otherwise the pair is halved further.
   bool newton(const Span& sa, const Span& sb) {
-    const LaSegment &ga = A.tracer.curve().segments()[sa.seg], &gb = B.tracer.curve().segments()[sb.seg];
+    const LaSegment &ga = A.tracer.source().curve().segments()[sa.seg], &gb = B.tracer.source().curve().segments()[sb.seg];
     const double la = ga.scale(), lb = gb.scale();
     const double wa = sa.u1 - sa.u0, wb = sb.u1 - sb.u0;
     const double alo = std::max(ga.ua(), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(), sa.u1 + 1e-9 * wa);
