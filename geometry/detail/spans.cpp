@@ -1,6 +1,9 @@
 #include "lac/geometry/detail/spans.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cstdint>
+#include <numbers>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +58,49 @@ double PlanarSource::variation(size_t k) const {
   if (const auto ui = seg.inflection_u(); ui && *ui > seg.ua() && *ui < seg.ub())
     return std::abs(seg.phi_at(*ui) - seg.phi_a()) + std::abs(seg.phi_b() - seg.phi_at(*ui));
   return std::abs(seg.turning());
+}
+
+std::vector<double> PlanarSource::angle_cuts(size_t k, double beta, size_t cap, bool* capped) const {
+  return detail::angle_cuts(curve_.segments()[k], beta, std::numbers::pi, cap, capped);
+}
+
+std::vector<double> QuadraticSource::angle_cuts(size_t k, double beta, size_t cap, bool* capped) const {
+  constexpr double pi = std::numbers::pi;
+  std::vector<double> ends{s0_};
+  if (inside(s0_, s1_)) ends.push_back(curve_.s_at_zero_kappa());
+  ends.push_back(s1_);
+  std::vector<double> out{s0_};
+  for (size_t j = 0; j + 1 < ends.size(); ++j) {
+    const double a = ends[j], b = ends[j + 1];
+    const double ta = theta(k, a), tb = theta(k, b);
+    const double lo = std::min(ta, tb), hi = std::max(ta, tb);
+    // Targets beta + mπ strictly inside (lo, hi), in the order s meets them.
+    const double m0 = std::floor((lo - beta) / pi) + 1, m1 = std::ceil((hi - beta) / pi) - 1;
+    if (m1 - m0 + 1 >= static_cast<double>(cap)) {
+      *capped = true;
+      return {};
+    }
+    const double dir = tb >= ta ? 1.0 : -1.0;
+    double left = a;
+    for (double i = 0; i <= m1 - m0; ++i) {
+      const double target = beta + pi * (dir > 0 ? m0 + i : m1 - i);
+      if (!(target > lo && target < hi)) continue;
+      const auto f = [&](double s) { return dir * (theta(k, s) - target); };
+      const double fl = f(left), fb = f(b);
+      if (!(fl < 0 && fb > 0)) continue;  // rounding at an end: the value is that end
+      std::uintmax_t it = 100;
+      const double eps = std::numeric_limits<double>::epsilon(), floor = eps * (b - a);
+      const auto close = [eps, floor](double x, double y) {
+        return std::abs(y - x) <= 4 * eps * std::max(std::abs(x), std::abs(y)) + floor;
+      };
+      const auto r = boost::math::tools::toms748_solve(f, left, b, fl, fb, close, it);
+      const double root = std::abs(f(r.first)) <= std::abs(f(r.second)) ? r.first : r.second;
+      if (root > out.back()) out.push_back(root);
+      left = root;
+    }
+    if (b > out.back()) out.push_back(b);
+  }
+  return out;
 }
 
 QuadraticSource::QuadraticSource(const QuadraticLaCurve& curve, double s0, double s1, const GaussLegendre& method,

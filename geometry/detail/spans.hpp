@@ -83,6 +83,10 @@ class PlanarSource {
   double kappa(size_t k, double u) const;
   double theta_dev(size_t k, double u0, double u1, double uc) const;
   double variation(size_t k) const;
+  /// The u values of piece k where θ ≡ beta (mod π), with its ends and inflection (la_segment_angles.hpp).
+  std::vector<double> angle_cuts(size_t k, double beta, size_t cap, bool* capped) const;
+  /// Where piece k's end is measured from (for messages).
+  double piece_start(size_t k) const { return curve_.segment_start(k); }
 
  private:
   const PlanarCurve& curve_;
@@ -111,6 +115,11 @@ class QuadraticSource {
   double kappa(size_t, double u) const { return curve_.kappa_at_s(u); }
   double theta_dev(size_t k, double u0, double u1, double uc) const;
   double variation(size_t k) const;
+  /// The s values in [s0, s1] where θ ≡ beta (mod π), ascending, with s0, s1 and the inflection:
+  /// on each monotonic piece of θ the targets beta + mπ it passes, each solved by TOMS 748 on
+  /// θ(s). Empty (with *capped set) when a monotonic piece holds `cap` values or more.
+  std::vector<double> angle_cuts(size_t k, double beta, size_t cap, bool* capped) const;
+  double piece_start(size_t) const { return s0_; }
 
  private:
   bool inside(double u0, double u1) const;  // the inflection lies in (u0, u1)

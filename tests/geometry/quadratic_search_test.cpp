@@ -1,9 +1,13 @@
-// geometry/closest_point on arcs of quadratic LA curves (003): the global minimum of the distance
+// geometry/closest_point and intersect_line on arcs of quadratic LA curves (003). Closest point:
+// the global minimum of the distance
 // over random curves (both signs of γ, through the inflection or not) and spirals turning up to
 // 40 rad, with random query points, points near the evolute and points on the arc, against an
 // independent computation: dense sampling of the arc (positions by the curve's own
 // Gauss–Kronrod evaluator at tolerance 1e-15, chained sample to sample) and Brent polishing of
 // every sampled local minimum (positions integrated from the sample before it).
+// Lines: every sign change of the signed distance between the same samples, polished by TOMS 748,
+// against the list of crossings (random lines, and lines through the arc's points that cross a
+// spiral many times).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +18,10 @@
 #include <vector>
 
 #include "lac/curves/quadratic/quadratic_position.hpp"
+#include <boost/math/tools/toms748_solve.hpp>
+
 #include "lac/geometry/closest_point.hpp"
+#include "lac/geometry/intersections.hpp"
 #include "tests/support/input_error.hpp"
 
 namespace lac {
@@ -31,7 +38,7 @@ struct Lcg {
   double in(double a, double b) { return a + (b - a) * next(); }
 };
 
-const GaussKronrod kTight{1e-15};
+const GaussKronrod kTight{1e-15, 500};
 
 struct Sample {
   double s;
@@ -42,11 +49,31 @@ struct Sample {
 struct Reference {
   const QuadraticLaCurve& c;
   std::vector<Sample> samples;
+  // Samples at most L/n apart and turning at most 0.02 rad each (denser where κ is large, e.g.
+  // the tight coils of a spiral), each position integrated from the one before; the first one
+  // marched the same way from s = 0 (position 0).
   Reference(const QuadraticLaCurve& curve, double s0, double s1, int n) : c(curve) {
-    const std::vector<PositionResult> pts = polyline(c, s0, s1, n, kTight);
-    for (const PositionResult& r : pts) {
-      EXPECT_TRUE(usable(r.status)) << r.message;
-      samples.push_back({r.point.s, r.point.position});
+    const double h = (s1 - s0) / n;
+    const auto step_from = [&](double s, double toward) {
+      const double dir = toward > s ? 1.0 : -1.0;
+      double step = std::min(h, 0.02 / std::abs(c.kappa_at_s(s)));
+      while (std::abs(toward - s) > step && std::abs(c.kappa_at_s(s + dir * step)) * step > 0.02) step *= 0.5;
+      return std::abs(toward - s) <= step ? toward : s + dir * step;
+    };
+    const auto advance = [&](double s, double next) {
+      const auto I = detail::integrate_quadratic(c, kTight, s, next, 1'000'000);
+      EXPECT_TRUE(usable(I.status)) << I.message;
+      return I.value;
+    };
+    Sample x{0.0, {0.0, 0.0}};
+    for (int i = 0; i < 1'000'000 && x.s != s0; ++i) {
+      const double next = step_from(x.s, s0);
+      x = {next, x.p + advance(x.s, next)};
+    }
+    samples.push_back(x);
+    while (samples.back().s < s1 && samples.size() < 1'000'000) {
+      const double next = step_from(samples.back().s, s1);
+      samples.push_back({next, samples.back().p + advance(samples.back().s, next)});
     }
   }
   cplx at(size_t i, double s) const {
@@ -90,6 +117,37 @@ double reach(const QuadraticLaCurve& c, double s_ref, double end, double turn) {
   return b;
 }
 
+// A random arc: every third a spiral (γ > 0, turning 15–45 rad), the others a random part of the
+// default range of a random curve (through the inflection or not); within |s| <= 200 (redrawn
+// otherwise: for small |γ| the default range can reach 1e22).
+struct Arc {
+  QuadraticLaCurve c;
+  double s0, s1;
+  bool spiral;
+};
+
+Arc draw_arc(Lcg& rng, bool spiral) {
+  QuadraticOptions o;
+  double alpha = 0, gamma = 0, lambda = 1, s0 = 0, s1 = 0;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    o.through_inflection = !spiral && rng.next() < 0.5;
+    alpha = rng.in(-3, 3), gamma = spiral ? rng.in(0.02, 0.3) : rng.in(-0.5, 0.5), lambda = rng.in(0.3, 3);
+    const QuadraticLaCurve trial(alpha, gamma, lambda, o);
+    if (spiral) {
+      const double turn = rng.in(15, 45), side = rng.next();
+      s0 = reach(trial, 0.0, trial.s_domain().lo, side * turn);
+      s1 = reach(trial, 0.0, trial.s_domain().hi, (1 - side) * turn);
+    } else {
+      const Interval r = trial.default_range();
+      const double x = rng.in(0, 0.4), y = rng.in(0.6, 1);
+      s0 = r.lo + x * (r.hi - r.lo);
+      s1 = r.lo + y * (r.hi - r.lo);
+    }
+    if (std::max(std::abs(s0), std::abs(s1)) <= 200) break;
+  }
+  return {QuadraticLaCurve(alpha, gamma, lambda, o), s0, s1, spiral};
+}
+
 TEST(GeometryQuadraticClosestPoint, GlobalMinimumMatchesDenseReference) {
   Lcg rng;
   int checked = 0, spirals = 0, through = 0, ok = 0, several = 0;
@@ -97,30 +155,14 @@ TEST(GeometryQuadraticClosestPoint, GlobalMinimumMatchesDenseReference) {
   long spans = 0, most_spans = 0;
   for (int curve_index = 0; curve_index < 48; ++curve_index) {
     const bool spiral = curve_index % 3 == 0;
-    // Arcs within |s| <= 200 (redrawn otherwise: for small |γ| the default range can reach 1e22).
-    QuadraticOptions o;
-    double alpha = 0, gamma = 0, lambda = 1, s0 = 0, s1 = 0;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-      o.through_inflection = !spiral && rng.next() < 0.5;
-      alpha = rng.in(-3, 3), gamma = spiral ? rng.in(0.02, 0.3) : rng.in(-0.5, 0.5), lambda = rng.in(0.3, 3);
-      const QuadraticLaCurve trial(alpha, gamma, lambda, o);
-      if (spiral) {  // γ > 0: θ is unbounded both ways; an arc turning 10–40 rad
-        const double turn = rng.in(15, 45), side = rng.next();
-        s0 = reach(trial, 0.0, trial.s_domain().lo, side * turn);
-        s1 = reach(trial, 0.0, trial.s_domain().hi, (1 - side) * turn);
-      } else {
-        const Interval r = trial.default_range();
-        const double a = rng.in(0, 0.4), b = rng.in(0.6, 1);
-        s0 = r.lo + a * (r.hi - r.lo);
-        s1 = r.lo + b * (r.hi - r.lo);
-      }
-      if (std::max(std::abs(s0), std::abs(s1)) <= 200) break;
-    }
-    const QuadraticLaCurve c(alpha, gamma, lambda, o);
+    const Arc arc = draw_arc(rng, spiral);
+    const QuadraticLaCurve& c = arc.c;
+    const double s0 = arc.s0, s1 = arc.s1, alpha = c.alpha(), gamma = c.gamma();
+    const QuadraticOptions& o = c.options();
     const double turning = std::abs(c.theta_at_s(s1) - c.theta_at_s(s0));
     if (o.through_inflection && c.has_inflection() && s0 < c.s_at_zero_kappa() && s1 > c.s_at_zero_kappa()) ++through;
     most_turning = std::max(most_turning, turning);
-    const int n = static_cast<int>(std::min(20000.0, 300 + 100 * turning));
+    const int n = 1000;
     const Reference ref(c, s0, s1, n);
     const double L = s1 - s0;
     cplx lo = ref.samples[0].p, hi = lo;
@@ -173,6 +215,66 @@ TEST(GeometryQuadraticClosestPoint, GlobalMinimumMatchesDenseReference) {
   (void)several;
 }
 
+TEST(GeometryQuadraticIntersectLine, AllCrossingsMatchTheDenseReference) {
+  Lcg rng;
+  rng.x = 24680;
+  int lines = 0, total = 0, most = 0, spirals = 0;
+  double worst = 0;
+  for (int curve_index = 0; curve_index < 24; ++curve_index) {
+    const Arc arc = draw_arc(rng, curve_index % 3 == 0);
+    spirals += arc.spiral;
+    const QuadraticLaCurve& c = arc.c;
+    const double turning = std::abs(c.theta_at_s(arc.s1) - c.theta_at_s(arc.s0)), L = arc.s1 - arc.s0;
+    const Reference ref(c, arc.s0, arc.s1, 1000);
+    const size_t n = ref.samples.size();
+    for (int li = 0; li < 4; ++li) {
+      // Line 0: through the centre of curvature at the arc's more curved end (across the windings
+      // of a spiral); the others through random points near the arc.
+      const size_t end = std::abs(c.kappa_at_s(arc.s0)) > std::abs(c.kappa_at_s(arc.s1)) ? 0 : n - 1;
+      const size_t pick = li == 0 ? end : static_cast<size_t>(rng.in(0, 1) * double(n - 1));
+      const double ks = c.kappa_at_s(ref.samples[pick].s);
+      const cplx P = ref.samples[pick].p + (li == 0 ? cplx(0, 1) * std::polar(1.0, c.theta_at_s(ref.samples[pick].s)) / ks
+                                                    : cplx(rng.in(-0.01, 0.01), rng.in(-0.01, 0.01)) * L);
+      const cplx D = std::polar(1.0, rng.in(0, 6.283185307179586));
+      const auto h = [&](cplx p) { return D.real() * (p - P).imag() - D.imag() * (p - P).real(); };
+      std::vector<double> expected;
+      for (size_t i = 0; i + 1 < n; ++i) {
+        const double a = h(ref.samples[i].p), b = h(ref.samples[i + 1].p);
+        if (a == 0) expected.push_back(ref.samples[i].s);
+        if (!((a < 0 && b > 0) || (a > 0 && b < 0))) continue;
+        const double base = ref.samples[i].s;
+        const auto f = [&](double t) { return h(ref.at(i, base + t)); };
+        std::uintmax_t it = 200;
+        const auto r = boost::math::tools::toms748_solve(f, 0.0, ref.samples[i + 1].s - base, a, b,
+                                                         boost::math::tools::eps_tolerance<double>(50), it);
+        expected.push_back(base + 0.5 * (r.first + r.second));
+      }
+      const Intersections x = intersect_line(c, arc.s0, arc.s1, P, D);
+      ASSERT_TRUE(usable(x.status)) << x.message;
+      // Sampling can miss a pair of crossings closer than the sample spacing (and a touch): the
+      // library's list holds the reference's, and its extra points come in such close pairs or touches.
+      size_t j = 0;
+      for (const double se : expected) {
+        while (j < x.points.size() && x.points[j].s < se - 1e-7 * L) ++j;
+        ASSERT_LT(j, x.points.size()) << "crossing at s = " << se << " missing";
+        EXPECT_NEAR(x.points[j].s, se, 1e-7 * L);
+        worst = std::max(worst, std::abs(x.points[j].s - se) / L);
+        EXPECT_LE(std::abs(h(x.points[j].point)), x.points[j].error_estimate + 1e-12 * L);
+        ++j;
+      }
+      EXPECT_LE(x.points.size(), expected.size() + 2) << "extra points";
+      for (size_t i = 1; i < x.points.size(); ++i) EXPECT_LT(x.points[i - 1].s, x.points[i].s);
+      total += static_cast<int>(expected.size());
+      most = std::max(most, static_cast<int>(expected.size()));
+      ++lines;
+    }
+  }
+  EXPECT_EQ(spirals, 8);
+  EXPECT_GE(most, 8);
+  std::printf("quadratic intersect_line: %d lines on 24 arcs, %d crossings (most %d on one line); worst |s - s_ref|/L = %.2e\n",
+              lines, total, most, worst);
+}
+
 TEST(GeometryQuadraticClosestPoint, BadInput) {
   const QuadraticLaCurve c(-1.0, -0.3, 1.0);
   const Interval r = c.default_range();
@@ -182,6 +284,9 @@ TEST(GeometryQuadraticClosestPoint, BadInput) {
   GeometryOptions bad;
   bad.tolerance = 0;
   EXPECT_EQ(test::thrown_parameter([&] { closest_point(c, r.lo, r.hi, {0, 0}, bad); }), "tolerance");
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, r.lo, r.hi, {0, 0}, {0, 0}); }), "direction");
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, r.lo, r.hi, {NAN, 0}, {1, 0}); }), "point");
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_line(c, r.hi, r.lo, {0, 0}, {1, 0}); }), "s1");
 }
 
 }  // namespace
