@@ -93,6 +93,9 @@ ClosestPoint search(Tracer& tr, std::complex<double> query, const GeometryOption
   size_t best_span = 0;
   bool best_polished = false;
   double leaf_lb = kInf;  // smallest (distance − error) over polished spans
+  // Smallest bound of the spans discarded as within the tolerance of the best (their minimum may
+  // still lie below it by up to the tolerance: part of the error bound).
+  double dropped_lb = kInf;
   const auto best_ub = [&] { return best.d + best.err; };
   const auto offer = [&](const Candidate& c, size_t span, bool polished) {
     if (c.d + c.err < best_ub()) best = c, best_span = span, best_polished = polished;
@@ -104,6 +107,7 @@ ClosestPoint search(Tracer& tr, std::complex<double> query, const GeometryOption
   for (size_t i = 0; i < store.size(); ++i) {
     const double lb = lower_bound(store[i], query);
     if (lb < best_ub() - tol) heap.push({lb, i});
+    else if (lb < best_ub()) dropped_lb = std::min(dropped_lb, lb);
   }
 
   double stop_lb = kInf;
@@ -138,6 +142,7 @@ ClosestPoint search(Tracer& tr, std::complex<double> query, const GeometryOption
       offer({child.uc, std::abs(child.pc - query), child.err, child.pc}, j, false);
       const double clb = lower_bound(child, query);
       if (clb < best_ub() - tol) heap.push({clb, j});
+      else if (clb < best_ub()) dropped_lb = std::min(dropped_lb, clb);
     }
   }
   if (!best_polished) {  // the best is a span's centre: its span's own minimum is at most as far
@@ -150,7 +155,7 @@ ClosestPoint search(Tracer& tr, std::complex<double> query, const GeometryOption
   out.s = tr.s_of(bs.seg, best.u);
   out.point = best.p;
   out.distance = best.d;
-  const double lower = std::min(stop_lb, leaf_lb);
+  const double lower = std::min({stop_lb, leaf_lb, dropped_lb});
   out.error_estimate = std::max(best.err, best.d - std::min(lower, best.d));
   out.error = out.error_estimate / L;
   if (capped)
