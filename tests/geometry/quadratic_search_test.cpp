@@ -282,6 +282,29 @@ TEST(GeometryQuadraticIntersectLine, AllCrossingsMatchTheDenseReference) {
               lines, total, most, worst);
 }
 
+TEST(GeometryQuadraticClosestPoint, CapsEndWithAStatus) {
+  // An arc turning about 28.6 rad needs 58 spans of 0.5 rad: more than max_spans = 16 (no hang,
+  // a status that is not usable).
+  const QuadraticLaCurve c(0.5, 0.2, 1.0);
+  ASSERT_GT(std::abs(c.theta_at_s(3.0) - c.theta_at_s(-3.0)), 28.0);
+  GeometryOptions o;
+  o.max_spans = 16;
+  const ClosestPoint r = closest_point(c, -3.0, 3.0, {0.1, 0.05}, o);
+  EXPECT_EQ(r.status, Status::max_iterations);
+  EXPECT_NE(r.message.find("max_spans"), std::string::npos) << r.message;
+  EXPECT_FALSE(usable(r.status));
+  // The line's cap counts monotonic pieces (about 28.6/π here) and points: max_points = 1 of several.
+  GeometryOptions one;
+  one.max_points = 1;
+  ASSERT_GE(intersect_line(c, -3.0, 3.0, {0.1, 0.1}, {1.0, 0.3}).points.size(), 2u);
+  const Intersections x = intersect_line(c, -3.0, 3.0, {0.1, 0.1}, {1.0, 0.3}, one);
+  EXPECT_EQ(x.status, Status::max_iterations) << x.message;
+  EXPECT_NE(x.message.find("max_points"), std::string::npos) << x.message;
+  // With the default cap both are ok.
+  EXPECT_EQ(closest_point(c, -3.0, 3.0, {0.1, 0.05}).status, Status::ok);
+  EXPECT_EQ(intersect_line(c, -3.0, 3.0, {0.1, 0.1}, {1.0, 0.3}).status, Status::ok);
+}
+
 TEST(GeometryQuadraticClosestPoint, BadInput) {
   const QuadraticLaCurve c(-1.0, -0.3, 1.0);
   const Interval r = c.default_range();
