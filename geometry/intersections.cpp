@@ -186,11 +186,13 @@ bool transversal(const Span& x, const Span& y) {
 }
 
 // Spans of one curve with their halves computed once.
+template <class Tracer>
 struct SpanTree {
-  SpanTracer tracer;
+  Tracer tracer;
   std::vector<Span> spans;
   std::vector<std::optional<std::pair<size_t, size_t>>> children;
-  SpanTree(const PlanarCurve& c, const GaussLegendre& m) : tracer(c, m) {}
+  template <class... Args>
+  explicit SpanTree(const Args&... args) : tracer(args...) {}
   void init(long cap) {
     spans = tracer.cover(kMaxTurn, kMinSpans, cap);
     children.assign(spans.size(), std::nullopt);
@@ -208,9 +210,10 @@ struct SpanTree {
   }
 };
 
+template <class TA, class TB>
 struct PairSolver {
-  SpanTree& A;
-  SpanTree& B;
+  SpanTree<TA>& A;
+  SpanTree<TB>& B;
   double tol;
   double angle_tol;
   Intersections& out;
@@ -225,11 +228,11 @@ struct PairSolver {
   // Newton on p_a(u) − p_b(v) = 0, its steps kept in the pair's box: true when it converged to a
   // root there (the pair holds at most one: transversal). Otherwise the pair is halved further.
   bool newton(const Span& sa, const Span& sb) {
-    const LaSegment &ga = A.tracer.source().curve().segments()[sa.seg], &gb = B.tracer.source().curve().segments()[sb.seg];
-    const double la = ga.scale(), lb = gb.scale();
+    const auto &ga = A.tracer.source(), &gb = B.tracer.source();
+    const double la = ga.ds_du(sa.seg), lb = gb.ds_du(sb.seg);
     const double wa = sa.u1 - sa.u0, wb = sb.u1 - sb.u0;
-    const double alo = std::max(ga.ua(), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(), sa.u1 + 1e-9 * wa);
-    const double blo = std::max(gb.ua(), sb.u0 - 1e-9 * wb), bhi = std::min(gb.ub(), sb.u1 + 1e-9 * wb);
+    const double alo = std::max(ga.ua(sa.seg), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(sa.seg), sa.u1 + 1e-9 * wa);
+    const double blo = std::max(gb.ua(sb.seg), sb.u0 - 1e-9 * wb), bhi = std::min(gb.ub(sb.seg), sb.u1 + 1e-9 * wb);
     // Start: the crossing of the tangent lines at the centres.
     const cplx c = sb.pc - sa.pc, ta = sa.tc, tb = -sb.tc;
     const double det = cross(ta, tb);
@@ -325,20 +328,16 @@ struct PairSolver {
   }
 };
 
-}  // namespace
-
-Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options) {
-  options.validate("intersect_curves");
-  a.check_s(0.0, "a");
-  b.check_s(0.0, "b");
-  const double L = a.length(), scale = std::max(a.length(), b.length()), tol = options.tolerance * scale;
-  SpanTree A(a, options.method), B(b, options.method);
+// The two-curve search of intersections.hpp on the spans of any two span sources.
+template <class TA, class TB>
+Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double scale, const GeometryOptions& options) {
+  const double tol = options.tolerance * scale;
   A.init(options.max_spans);
   if (A.tracer.failed()) return failure(A.tracer.status(), "intersect_curves: a: " + A.tracer.message(), A.tracer);
   B.init(options.max_spans - static_cast<long>(A.spans.size()));
   if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   Intersections out;
-  PairSolver solver{A, B, tol, std::sqrt(options.tolerance), out};
+  PairSolver<TA, TB> solver{A, B, tol, std::sqrt(options.tolerance), out};
   const double leaf = kLeafFraction * scale;
   const auto made = [&] { return A.tracer.spans_made() + B.tracer.spans_made(); };
   const auto finish = [&](Status s, std::string m) {
@@ -425,6 +424,28 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
     if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   }
   return finish(Status::ok, "");
+}
+
+}  // namespace
+
+Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options) {
+  options.validate("intersect_curves");
+  a.check_s(0.0, "a");
+  b.check_s(0.0, "b");
+  SpanTree<SpanTracer> A(a, options.method), B(b, options.method);
+  return curves_search(A, B, a.length(), std::max(a.length(), b.length()), options);
+}
+
+Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, const PlanarCurve& b,
+                               const GeometryOptions& options) {
+  options.validate("intersect_curves");
+  a.check_s(s0, "s0");
+  a.check_s(s1, "s1");
+  if (!(s1 > s0)) throw_input_error("intersect_curves", "s1", s1, interval_text(s0, a.s_domain().hi));
+  b.check_s(0.0, "b");
+  SpanTree<detail::QuadraticSpanTracer> A(a, s0, s1, options.method, options.tolerance);
+  SpanTree<SpanTracer> B(b, options.method);
+  return curves_search(A, B, s1 - s0, std::max(s1 - s0, b.length()), options);
 }
 
 }  // namespace lac

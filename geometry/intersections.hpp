@@ -72,6 +72,10 @@ Intersections intersect_line(const QuadraticLaCurve& curve, double s0, double s1
                              std::complex<double> direction, const GeometryOptions& options = {});
 /// Every common point of a and b.
 Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options = {});
+/// Every common point of the arc [s0, s1] of a quadratic LA curve a and the PlanarCurve b, by the
+/// same search (s on a: the curve's arc length; t on b). Tolerance relative to max(s1 − s0, length of b).
+Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, const PlanarCurve& b,
+                               const GeometryOptions& options = {});
 
 constexpr std::string_view to_string(IntersectionKind k) { return k == IntersectionKind::crossing ? "crossing" : "tangent"; }
 

@@ -75,6 +75,7 @@ class PlanarSource {
   double ub(size_t k) const { return curve_.segments()[k].ub(); }
   double length() const { return curve_.length(); }
   double piece_length(size_t k) const { return curve_.segments()[k].length(); }
+  double ds_du(size_t k) const { return curve_.segments()[k].scale(); }  ///< arc length per unit u
   Known origin(size_t k) const { return {ua(k), curve_.segments()[k].start(), 0.0}; }
   Step integrate(size_t k, double u0, double u1) const;
   double s_of(size_t k, double u) const;
@@ -107,6 +108,7 @@ class QuadraticSource {
   double ub(size_t) const { return s1_; }
   double length() const { return s1_ - s0_; }
   double piece_length(size_t) const { return s1_ - s0_; }
+  double ds_du(size_t) const { return 1.0; }
   Known origin(size_t) const { return {0.0, {0.0, 0.0}, 0.0}; }
   Step integrate(size_t k, double u0, double u1) const;
   double s_of(size_t, double u) const { return u; }

@@ -22,6 +22,9 @@
 
 #include "lac/geometry/closest_point.hpp"
 #include "lac/geometry/intersections.hpp"
+#include "lac/geometry/transforms.hpp"
+#include "curves.hpp"
+#include "reference_curve.hpp"
 #include "tests/support/input_error.hpp"
 
 namespace lac {
@@ -280,6 +283,75 @@ TEST(GeometryQuadraticIntersectLine, AllCrossingsMatchTheDenseReference) {
   EXPECT_GE(most, 8);
   std::printf("quadratic intersect_line: %d lines on 24 arcs, %d crossings (most %d on one line); worst |s - s_ref|/L = %.2e\n",
               lines, total, most, worst);
+}
+
+TEST(GeometryQuadraticIntersectCurves, CrossingsWithAPlanarCurveMatchTheDenseReference) {
+  // Arcs against the test curves (curves.hpp) scaled and moved onto the arc's bounding box; the
+  // reference: crossings of the arc's samples with the long-double model's polyline
+  // (reference_curve.hpp), polished by Newton on both references' positions.
+  Lcg rng;
+  rng.x = 13579;
+  const std::vector<PlanarCurve> others = test::test_curves();
+  int pairs = 0, total = 0;
+  double worst = 0;
+  for (int index = 0; index < 18; ++index) {
+    const Arc arc = draw_arc(rng, index % 3 == 0);
+    const QuadraticLaCurve& c = arc.c;
+    const double L = arc.s1 - arc.s0;
+    const Reference ref(c, arc.s0, arc.s1, 1000);
+    cplx lo = ref.samples[0].p, hi = lo;
+    for (const Sample& x : ref.samples)
+      lo = {std::min(lo.real(), x.p.real()), std::min(lo.imag(), x.p.imag())},
+      hi = {std::max(hi.real(), x.p.real()), std::max(hi.imag(), x.p.imag())};
+    const PlanarCurve& o = others[static_cast<size_t>(index) % others.size()];
+    const BoundingBox ob = o.bounding_box();
+    const double k = std::abs(hi - lo) / std::abs(ob.hi - ob.lo);
+    const PlanarCurve b = translated(scaled(o, k, {0, 0}), 0.5 * (lo + hi) - 0.5 * k * (ob.lo + ob.hi));
+    const test::RefCurve rb(b, 500);
+    std::vector<std::pair<double, double>> expected;
+    for (size_t i = 0; i + 1 < ref.samples.size(); ++i) {
+      const cplx a0 = ref.samples[i].p, a1 = ref.samples[i + 1].p;
+      for (size_t j = 0; j + 1 < rb.samples.size(); ++j) {
+        if (rb.samples[j].seg != rb.samples[j + 1].seg) continue;
+        const cplx b0(double(rb.samples[j].p.real()), double(rb.samples[j].p.imag()));
+        const cplx b1(double(rb.samples[j + 1].p.real()), double(rb.samples[j + 1].p.imag()));
+        const auto cr = [](cplx x, cplx y) { return x.real() * y.imag() - x.imag() * y.real(); };
+        const double d = cr(a1 - a0, b1 - b0);
+        if (d == 0) continue;
+        const double x = cr(b0 - a0, b1 - b0) / d, y = cr(b0 - a0, a1 - a0) / d;
+        if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) continue;
+        const size_t kb = rb.samples[j].seg;
+        const auto& g = rb.segs[kb];
+        double s = ref.samples[i].s + x * (ref.samples[i + 1].s - ref.samples[i].s);
+        test::ld u = rb.samples[j].u + y * (rb.samples[j + 1].u - rb.samples[j].u);
+        for (int it = 0; it < 20; ++it) {
+          const test::cld pb = rb.position(kb, u), tb = -g.scale * rb.tangent(kb, u);
+          const cplx F = ref.at(i, s) - cplx(double(pb.real()), double(pb.imag()));
+          const cplx ta = std::polar(1.0, c.theta_at_s(s)), tbd(double(tb.real()), double(tb.imag()));
+          const double det = cr(ta, tbd);
+          s += cr(-F, tbd) / det;
+          u += cr(ta, -F) / det;
+        }
+        expected.push_back({s, double(g.s_begin + g.scale * (u - g.ua))});
+      }
+    }
+    std::sort(expected.begin(), expected.end());
+    std::vector<std::pair<double, double>> merged;
+    for (const auto& e : expected)
+      if (merged.empty() || std::abs(e.first - merged.back().first) > 1e-9 * L) merged.push_back(e);
+    const Intersections r = intersect_curves(c, arc.s0, arc.s1, b);
+    ASSERT_TRUE(usable(r.status)) << r.message;
+    ASSERT_EQ(r.points.size(), merged.size()) << "arc " << index;
+    for (size_t i = 0; i < merged.size(); ++i) {
+      EXPECT_NEAR(r.points[i].s, merged[i].first, 1e-9 * L);
+      EXPECT_NEAR(r.points[i].t, merged[i].second, 1e-9 * b.length());
+      worst = std::max(worst, std::abs(r.points[i].s - merged[i].first) / L);
+    }
+    total += static_cast<int>(merged.size());
+    ++pairs;
+  }
+  EXPECT_GE(total, 20);
+  std::printf("quadratic intersect_curves: %d arc/curve pairs, %d crossings; worst |s - s_ref|/L = %.2e\n", pairs, total, worst);
 }
 
 TEST(GeometryQuadraticClosestPoint, CapsEndWithAStatus) {
