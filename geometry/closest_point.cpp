@@ -44,7 +44,8 @@ bool convex(const detail::Span& sp, std::complex<double> q) {
 }
 
 // The minimum of |p − q| over the span: at an end, or at the root of g where g goes from − to +.
-Candidate polish(detail::SpanTracer& tr, const detail::Span& sp, std::complex<double> q) {
+template <class Tracer>
+Candidate polish(Tracer& tr, const detail::Span& sp, std::complex<double> q) {
   const detail::Known c = sp.anchor();
   const auto g_of = [&](const detail::Known& a) { return dot(a.p - q, tr.tangent(sp.seg, a.u)); };
   const detail::Known a0 = tr.trace(sp.seg, c, sp.u0), a1 = tr.trace(sp.seg, c, sp.u1);
@@ -70,16 +71,11 @@ Candidate polish(detail::SpanTracer& tr, const detail::Span& sp, std::complex<do
   return best;
 }
 
-}  // namespace
-
-ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query, const GeometryOptions& options) {
-  options.validate("closest_point");
-  if (!(std::isfinite(query.real()) && std::isfinite(query.imag())))
-    throw_input_error("closest_point", "query", "both coordinates must be finite");
-  curve.check_s(0.0, "curve");
-  const double L = curve.length(), tol = options.tolerance * L;
+// The branch and bound of closest_point.hpp on the spans of any span source (detail/spans.hpp).
+template <class Tracer>
+ClosestPoint search(Tracer& tr, std::complex<double> query, const GeometryOptions& options) {
+  const double L = tr.source().length(), tol = options.tolerance * L;
   ClosestPoint out;
-  detail::SpanTracer tr(curve, options.method);
   const auto finish = [&](Status s, std::string m) {
     out.evaluations = tr.evaluations();
     out.spans = tr.spans_made();
@@ -97,6 +93,9 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
   size_t best_span = 0;
   bool best_polished = false;
   double leaf_lb = kInf;  // smallest (distance − error) over polished spans
+  // Smallest bound of the spans discarded as within the tolerance of the best (their minimum may
+  // still lie below it by up to the tolerance: part of the error bound).
+  double dropped_lb = kInf;
   const auto best_ub = [&] { return best.d + best.err; };
   const auto offer = [&](const Candidate& c, size_t span, bool polished) {
     if (c.d + c.err < best_ub()) best = c, best_span = span, best_polished = polished;
@@ -108,6 +107,7 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
   for (size_t i = 0; i < store.size(); ++i) {
     const double lb = lower_bound(store[i], query);
     if (lb < best_ub() - tol) heap.push({lb, i});
+    else if (lb < best_ub()) dropped_lb = std::min(dropped_lb, lb);
   }
 
   double stop_lb = kInf;
@@ -142,6 +142,7 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
       offer({child.uc, std::abs(child.pc - query), child.err, child.pc}, j, false);
       const double clb = lower_bound(child, query);
       if (clb < best_ub() - tol) heap.push({clb, j});
+      else if (clb < best_ub()) dropped_lb = std::min(dropped_lb, clb);
     }
   }
   if (!best_polished) {  // the best is a span's centre: its span's own minimum is at most as far
@@ -154,7 +155,7 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
   out.s = tr.s_of(bs.seg, best.u);
   out.point = best.p;
   out.distance = best.d;
-  const double lower = std::min(stop_lb, leaf_lb);
+  const double lower = std::min({stop_lb, leaf_lb, dropped_lb});
   out.error_estimate = std::max(best.err, best.d - std::min(lower, best.d));
   out.error = out.error_estimate / L;
   if (capped)
@@ -163,6 +164,32 @@ ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query,
                       format_number(best.d) + ", global minimum not below " + format_number(lower));
   const Status s = grade_error(out.error, options.tolerance, options.accept);
   return finish(s, s == Status::ok ? "" : "closest_point: error bound " + format_number(out.error) + " above the tolerance");
+}
+
+void check_query(std::complex<double> query) {
+  if (!(std::isfinite(query.real()) && std::isfinite(query.imag())))
+    throw_input_error("closest_point", "query", "both coordinates must be finite");
+}
+
+}  // namespace
+
+ClosestPoint closest_point(const PlanarCurve& curve, std::complex<double> query, const GeometryOptions& options) {
+  options.validate("closest_point");
+  check_query(query);
+  curve.check_s(0.0, "curve");
+  detail::SpanTracer tr(curve, options.method);
+  return search(tr, query, options);
+}
+
+ClosestPoint closest_point(const QuadraticLaCurve& curve, double s0, double s1, std::complex<double> query,
+                           const GeometryOptions& options) {
+  options.validate("closest_point");
+  check_query(query);
+  curve.check_s(s0, "s0");
+  curve.check_s(s1, "s1");
+  if (!(s1 > s0)) throw_input_error("closest_point", "s1", s1, interval_text(s0, curve.s_domain().hi));
+  detail::QuadraticSpanTracer tr(curve, s0, s1, options.method, options.tolerance);
+  return search(tr, query, options);
 }
 
 }  // namespace lac

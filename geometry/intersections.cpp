@@ -77,7 +77,8 @@ void conclude(Intersections& out, double L, const GeometryOptions& o, Status cap
   if (out.status != Status::ok) out.message = "error bound " + format_number(out.error) + " (relative to the length)";
 }
 
-Intersections failure(Status s, std::string m, const SpanTracer& tr) {
+template <class Tracer>
+Intersections failure(Status s, std::string m, const Tracer& tr) {
   Intersections out;
   out.status = s;
   out.message = std::move(m);
@@ -86,46 +87,45 @@ Intersections failure(Status s, std::string m, const SpanTracer& tr) {
   return out;
 }
 
-}  // namespace
-
-Intersections intersect_line(const PlanarCurve& curve, cplx point, cplx direction, const GeometryOptions& options) {
-  options.validate("intersect_line");
+void check_line(cplx point, cplx direction) {
   if (!(std::isfinite(point.real()) && std::isfinite(point.imag())))
     throw_input_error("intersect_line", "point", "both coordinates must be finite");
   if (!(std::isfinite(direction.real()) && std::isfinite(direction.imag()) && std::abs(direction) > 0))
     throw_input_error("intersect_line", "direction", "a finite nonzero vector is needed");
-  curve.check_s(0.0, "curve");
+}
+
+// intersections.hpp's line search on the pieces of any span source (detail/spans.hpp).
+template <class Tracer>
+Intersections line_search(Tracer& tr, cplx point, cplx direction, const GeometryOptions& options) {
+  const auto& src = tr.source();
   const cplx D = unit(direction), P = point;
-  const double beta = std::arg(D), L = curve.length(), tol = options.tolerance * L;
+  const double beta = std::arg(D), L = src.length(), tol = options.tolerance * L;
   const double angle_tol = std::sqrt(options.tolerance);
-  SpanTracer tr(curve, options.method);
   Intersections out;
   const auto h = [&](cplx p) { return cross(D, p - P); };
   const auto record = [&](size_t k, const Known& a, IntersectionKind kind) {
     out.points.push_back({tr.s_of(k, a.u), dot(D, a.p - P), a.p, a.err + std::abs(h(a.p)), kind});
   };
-  for (size_t k = 0; k < curve.segments().size(); ++k) {
-    const LaSegment& seg = curve.segments()[k];
+  for (size_t k = 0; k < src.pieces(); ++k) {
     bool capped = false;
     const long left = std::max(0L, options.max_spans - out.spans);
-    const std::vector<double> cuts = detail::angle_cuts(seg, beta, kPi, static_cast<size_t>(left), &capped);
+    const std::vector<double> cuts = src.angle_cuts(k, beta, static_cast<size_t>(left), &capped);
     if (capped || out.spans + static_cast<long>(cuts.size()) > options.max_spans) {
       out.evaluations = tr.evaluations();
       conclude(out, L, options, Status::max_iterations,
                "intersect_line: more than max_spans = " + std::to_string(options.max_spans) +
-                   " monotonic pieces; the intersections listed are those before s = " + format_number(curve.segment_start(k)));
+                   " monotonic pieces; the intersections listed are those before s = " + format_number(src.piece_start(k)));
       return out;
     }
     out.spans += static_cast<long>(cuts.size()) - 1;
     std::vector<Known> at(cuts.size());
     std::vector<double> hv(cuts.size());
-    at[0] = {seg.ua(), seg.start(), 0.0};
     for (size_t i = 0; i < cuts.size(); ++i) {
-      if (i > 0) at[i] = tr.trace(k, at[i - 1], cuts[i]);
+      at[i] = tr.trace(k, i == 0 ? src.origin(k) : at[i - 1], cuts[i]);
       if (tr.failed()) return failure(tr.status(), "intersect_line: " + tr.message(), tr);
       hv[i] = h(at[i].p);
       // On the line within the tolerance: a touch where θ ≡ arg D (mod π), else a crossing at a
-      // segment's end or inflection.
+      // piece's end or inflection.
       if (std::abs(hv[i]) <= tol + at[i].err) {
         const double off = std::abs(std::sin(tr.theta(k, cuts[i]) - beta));
         record(k, at[i], off <= angle_tol ? IntersectionKind::tangent : IntersectionKind::crossing);
@@ -144,13 +144,34 @@ Intersections intersect_line(const PlanarCurve& curve, cplx point, cplx directio
       out.evaluations = tr.evaluations();
       conclude(out, L, options, Status::max_iterations,
                "intersect_line: more than max_points = " + std::to_string(options.max_points) +
-                   " intersections; those listed are the ones up to s = " + format_number(curve.segment_start(k + 1)));
+                   " intersections; those listed are the ones up to s = " + format_number(tr.s_of(k, src.ub(k))));
       return out;
     }
   }
   out.evaluations = tr.evaluations();
   conclude(out, L, options);
   return out;
+}
+
+}  // namespace
+
+Intersections intersect_line(const PlanarCurve& curve, cplx point, cplx direction, const GeometryOptions& options) {
+  options.validate("intersect_line");
+  check_line(point, direction);
+  curve.check_s(0.0, "curve");
+  SpanTracer tr(curve, options.method);
+  return line_search(tr, point, direction, options);
+}
+
+Intersections intersect_line(const QuadraticLaCurve& curve, double s0, double s1, cplx point, cplx direction,
+                             const GeometryOptions& options) {
+  options.validate("intersect_line");
+  check_line(point, direction);
+  curve.check_s(s0, "s0");
+  curve.check_s(s1, "s1");
+  if (!(s1 > s0)) throw_input_error("intersect_line", "s1", s1, interval_text(s0, curve.s_domain().hi));
+  detail::QuadraticSpanTracer tr(curve, s0, s1, options.method, options.tolerance);
+  return line_search(tr, point, direction, options);
 }
 
 namespace {
@@ -165,11 +186,13 @@ bool transversal(const Span& x, const Span& y) {
 }
 
 // Spans of one curve with their halves computed once.
+template <class Tracer>
 struct SpanTree {
-  SpanTracer tracer;
+  Tracer tracer;
   std::vector<Span> spans;
   std::vector<std::optional<std::pair<size_t, size_t>>> children;
-  SpanTree(const PlanarCurve& c, const GaussLegendre& m) : tracer(c, m) {}
+  template <class... Args>
+  explicit SpanTree(const Args&... args) : tracer(args...) {}
   void init(long cap) {
     spans = tracer.cover(kMaxTurn, kMinSpans, cap);
     children.assign(spans.size(), std::nullopt);
@@ -187,9 +210,10 @@ struct SpanTree {
   }
 };
 
+template <class TA, class TB>
 struct PairSolver {
-  SpanTree& A;
-  SpanTree& B;
+  SpanTree<TA>& A;
+  SpanTree<TB>& B;
   double tol;
   double angle_tol;
   Intersections& out;
@@ -204,11 +228,11 @@ struct PairSolver {
   // Newton on p_a(u) − p_b(v) = 0, its steps kept in the pair's box: true when it converged to a
   // root there (the pair holds at most one: transversal). Otherwise the pair is halved further.
   bool newton(const Span& sa, const Span& sb) {
-    const LaSegment &ga = A.tracer.curve().segments()[sa.seg], &gb = B.tracer.curve().segments()[sb.seg];
-    const double la = ga.scale(), lb = gb.scale();
+    const auto &ga = A.tracer.source(), &gb = B.tracer.source();
+    const double la = ga.ds_du(sa.seg), lb = gb.ds_du(sb.seg);
     const double wa = sa.u1 - sa.u0, wb = sb.u1 - sb.u0;
-    const double alo = std::max(ga.ua(), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(), sa.u1 + 1e-9 * wa);
-    const double blo = std::max(gb.ua(), sb.u0 - 1e-9 * wb), bhi = std::min(gb.ub(), sb.u1 + 1e-9 * wb);
+    const double alo = std::max(ga.ua(sa.seg), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(sa.seg), sa.u1 + 1e-9 * wa);
+    const double blo = std::max(gb.ua(sb.seg), sb.u0 - 1e-9 * wb), bhi = std::min(gb.ub(sb.seg), sb.u1 + 1e-9 * wb);
     // Start: the crossing of the tangent lines at the centres.
     const cplx c = sb.pc - sa.pc, ta = sa.tc, tb = -sb.tc;
     const double det = cross(ta, tb);
@@ -304,20 +328,16 @@ struct PairSolver {
   }
 };
 
-}  // namespace
-
-Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options) {
-  options.validate("intersect_curves");
-  a.check_s(0.0, "a");
-  b.check_s(0.0, "b");
-  const double L = a.length(), scale = std::max(a.length(), b.length()), tol = options.tolerance * scale;
-  SpanTree A(a, options.method), B(b, options.method);
+// The two-curve search of intersections.hpp on the spans of any two span sources.
+template <class TA, class TB>
+Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double scale, const GeometryOptions& options) {
+  const double tol = options.tolerance * scale;
   A.init(options.max_spans);
   if (A.tracer.failed()) return failure(A.tracer.status(), "intersect_curves: a: " + A.tracer.message(), A.tracer);
   B.init(options.max_spans - static_cast<long>(A.spans.size()));
   if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   Intersections out;
-  PairSolver solver{A, B, tol, std::sqrt(options.tolerance), out};
+  PairSolver<TA, TB> solver{A, B, tol, std::sqrt(options.tolerance), out};
   const double leaf = kLeafFraction * scale;
   const auto made = [&] { return A.tracer.spans_made() + B.tracer.spans_made(); };
   const auto finish = [&](Status s, std::string m) {
@@ -404,6 +424,28 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
     if (B.tracer.failed()) return failure(B.tracer.status(), "intersect_curves: b: " + B.tracer.message(), B.tracer);
   }
   return finish(Status::ok, "");
+}
+
+}  // namespace
+
+Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options) {
+  options.validate("intersect_curves");
+  a.check_s(0.0, "a");
+  b.check_s(0.0, "b");
+  SpanTree<SpanTracer> A(a, options.method), B(b, options.method);
+  return curves_search(A, B, a.length(), std::max(a.length(), b.length()), options);
+}
+
+Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, const PlanarCurve& b,
+                               const GeometryOptions& options) {
+  options.validate("intersect_curves");
+  a.check_s(s0, "s0");
+  a.check_s(s1, "s1");
+  if (!(s1 > s0)) throw_input_error("intersect_curves", "s1", s1, interval_text(s0, a.s_domain().hi));
+  b.check_s(0.0, "b");
+  SpanTree<detail::QuadraticSpanTracer> A(a, s0, s1, options.method, options.tolerance);
+  SpanTree<SpanTracer> B(b, options.method);
+  return curves_search(A, B, s1 - s0, std::max(s1 - s0, b.length()), options);
 }
 
 }  // namespace lac

@@ -34,6 +34,7 @@
 
 #include "lac/common/status.hpp"
 #include "lac/curves/planar/planar_curve.hpp"
+#include "lac/curves/quadratic/quadratic_curve.hpp"
 #include "lac/geometry/options.hpp"
 
 namespace lac {
@@ -63,8 +64,18 @@ struct Intersections {
 /// The line through `point` along `direction` (finite, nonzero: InputError naming them).
 Intersections intersect_line(const PlanarCurve& curve, std::complex<double> point, std::complex<double> direction,
                              const GeometryOptions& options = {});
+/// The line's intersections with the arc [s0, s1] of a quadratic LA curve (003), by the same
+/// search: θ is monotonic on each side of the inflection, so the arc lengths where θ ≡ arg D
+/// (mod π) are TOMS 748 roots of the closed form θ(s); positions from s = 0. s0 < s1 inside
+/// s_domain() (InputError "s0" / "s1"); tolerance relative to s1 − s0; `s` is the curve's arc length.
+Intersections intersect_line(const QuadraticLaCurve& curve, double s0, double s1, std::complex<double> point,
+                             std::complex<double> direction, const GeometryOptions& options = {});
 /// Every common point of a and b.
 Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const GeometryOptions& options = {});
+/// Every common point of the arc [s0, s1] of a quadratic LA curve a and the PlanarCurve b, by the
+/// same search (s on a: the curve's arc length; t on b). Tolerance relative to max(s1 − s0, length of b).
+Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, const PlanarCurve& b,
+                               const GeometryOptions& options = {});
 
 constexpr std::string_view to_string(IntersectionKind k) { return k == IntersectionKind::crossing ? "crossing" : "tangent"; }
 

@@ -1,7 +1,10 @@
 // Geometry on planar curves (geometry/, docs/geometry.md) for lac.Curve: closest point,
-// intersections with a line or another curve, offsets and their first cusp, transforms.
+// intersections with a line or another curve, offsets and their first cusp, transforms; closest
+// point and line intersections for arcs of lac.QuadraticCurve.
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include "bindings.hpp"
 #include "lac/geometry/closest_point.hpp"
@@ -94,6 +97,48 @@ void bind_geometry(py::module_& m) {
                    "status, message, points (dicts s, t = coordinate along the unit direction, point, kind = crossing | "
                    "tangent, error_estimate), error_estimate, spans, evaluations.") + kOptions +
        " max_points: cap on the intersections (default 10000).").c_str());
+  // Arcs of a quadratic LA curve (s_from / s_to: the curve's default_range() when None).
+  const auto arc = [](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to) {
+    const lac::Interval r = c.default_range();
+    return std::pair{s_from.value_or(r.lo), s_to.value_or(r.hi)};
+  };
+  m.def(
+      "closest_point",
+      [arc](const lac::QuadraticLaCurve& c, py::handle point, std::optional<double> s_from, std::optional<double> s_to,
+            double tolerance, long max_spans, double accept) {
+        const auto [s0, s1] = arc(c, s_from, s_to);
+        const lac::ClosestPoint r = lac::closest_point(c, s0, s1, point2(point, "closest_point", "point"),
+                                                       options(tolerance, max_spans, accept));
+        py::dict d;
+        d["status"] = status_text(r.status);
+        d["message"] = r.message;
+        d["s"] = r.s;
+        d["point"] = xy(r.point);
+        d["distance"] = r.distance;
+        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
+        d["spans"] = r.spans;
+        d["evaluations"] = r.evaluations;
+        return d;
+      },
+      py::arg("curve"), py::arg("point"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
+      py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept,
+      (std::string("The point of the arc [s_from, s_to] of a QuadraticCurve closest to `point` (global over the arc; "
+                   "default: the curve's default_range): the same dict. Tolerance relative to s_to - s_from.") + kOptions)
+          .c_str());
+  m.def(
+      "intersect_line",
+      [arc](const lac::QuadraticLaCurve& c, py::handle point, py::handle direction, std::optional<double> s_from,
+            std::optional<double> s_to, double tolerance, long max_spans, double accept, long max_points) {
+        const auto [s0, s1] = arc(c, s_from, s_to);
+        return intersections(lac::intersect_line(c, s0, s1, point2(point, "intersect_line", "point"),
+                                                 point2(direction, "intersect_line", "direction"),
+                                                 options(tolerance, max_spans, accept, max_points)));
+      },
+      py::arg("curve"), py::arg("point"), py::arg("direction"), py::kw_only(), py::arg("s_from") = py::none(),
+      py::arg("s_to") = py::none(), py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000,
+      py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
+      (std::string("Every intersection of the arc [s_from, s_to] of a QuadraticCurve (default: its default_range) "
+                   "with the line, ordered by s: the same dict.") + kOptions).c_str());
   m.def(
       "intersect_curves",
       [](const Curve& a, const Curve& b, double tolerance, long max_spans, double accept, long max_points) {

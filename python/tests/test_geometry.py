@@ -112,3 +112,33 @@ def test_bad_input(spiral):
     with pytest.raises(lac.InputError) as e:
         lac.split(spiral, spiral.length)
     assert e.value.parameter == "s"
+
+
+def test_quadratic_arc_closest_point_and_line():
+    """lac.closest_point / intersect_line on an arc of a QuadraticCurve against its dense samples."""
+    q = lac.QuadraticCurve(0.5, 0.2, 1.0)
+    s0, s1 = -3.0, 3.0  # turning about 28.6 rad: several local minima
+    pts = q.eval(np.linspace(s0, s1, 200001))
+    h = (s1 - s0) / (len(pts.s) - 1)
+    for p in [(0.1, 0.05), (-0.2, 0.3), (0.5, -0.4)]:
+        r = lac.closest_point(q, p, s_from=s0, s_to=s1)
+        assert r["status"] == "ok", r["message"]
+        d = np.hypot(pts.x - p[0], pts.y - p[1])
+        assert d.min() - h <= r["distance"] <= d.min() + 1e-12
+        assert s0 <= r["s"] <= s1
+        e = q.eval([r["s"]])
+        assert math.dist((e.x[0], e.y[0]), r["point"]) < 1e-11
+    r = lac.intersect_line(q, (0.1, 0.1), (1.0, 0.3), s_from=s0, s_to=s1)
+    assert r["status"] == "ok", r["message"]
+    hv = 1.0 * (pts.y - 0.1) - 0.3 * (pts.x - 0.1)
+    changes = np.nonzero(np.sign(hv[:-1]) * np.sign(hv[1:]) < 0)[0]
+    assert len(r["points"]) == len(changes) >= 2
+    for x, i in zip(r["points"], changes):
+        assert pts.s[i] - 1e-12 <= x["s"] <= pts.s[i + 1] + 1e-12
+    # The default arc is the curve's default_range.
+    lo, hi = q.default_range
+    r = lac.closest_point(q, (0.3, 0.2))
+    assert r["status"] == "ok" and lo <= r["s"] <= hi
+    with pytest.raises(lac.InputError) as e:
+        lac.closest_point(q, (0, 0), s_from=1.0, s_to=0.0)
+    assert e.value.parameter == "s1"
