@@ -57,6 +57,20 @@ Result result(const lac::Summary& summary, py::object c) {
   return r;
 }
 
+/// A ClosestPoint as the dict of lac.closest_point.
+py::dict closest_dict(const lac::ClosestPoint& r) {
+        py::dict d;
+        d["status"] = status_text(r.status);
+        d["message"] = r.message;
+        d["s"] = r.s;
+        d["point"] = xy(r.point);
+        d["distance"] = r.distance;
+        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
+        d["spans"] = r.spans;
+        d["evaluations"] = r.evaluations;
+        return d;
+}
+
 }  // namespace
 
 void bind_geometry(py::module_& m) {
@@ -68,16 +82,7 @@ void bind_geometry(py::module_& m) {
       [](const Curve& c, py::handle point, double tolerance, long max_spans, double accept) {
         const lac::ClosestPoint r =
             lac::closest_point(c.curve, point2(point, "closest_point", "point"), options(tolerance, max_spans, accept));
-        py::dict d;
-        d["status"] = status_text(r.status);
-        d["message"] = r.message;
-        d["s"] = r.s;
-        d["point"] = xy(r.point);
-        d["distance"] = r.distance;
-        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
-        d["spans"] = r.spans;
-        d["evaluations"] = r.evaluations;
-        return d;
+        return closest_dict(r);
       },
       py::arg("curve"), py::arg("point"), py::kw_only(), py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000,
       py::arg("accept") = lac::kDefaultAccept,
@@ -109,16 +114,7 @@ void bind_geometry(py::module_& m) {
         const auto [s0, s1] = arc(c, s_from, s_to);
         const lac::ClosestPoint r = lac::closest_point(c, s0, s1, point2(point, "closest_point", "point"),
                                                        options(tolerance, max_spans, accept));
-        py::dict d;
-        d["status"] = status_text(r.status);
-        d["message"] = r.message;
-        d["s"] = r.s;
-        d["point"] = xy(r.point);
-        d["distance"] = r.distance;
-        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
-        d["spans"] = r.spans;
-        d["evaluations"] = r.evaluations;
-        return d;
+        return closest_dict(r);
       },
       py::arg("curve"), py::arg("point"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
       py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept,
