@@ -52,7 +52,7 @@ int lac::fuzz::fuzz_one(lac::fuzz::FuzzInput& in) {
     o.verify = in.byte() % 2;
     const std::string what = "solve_g1_hermite p0 " + show_point(p.p0) + " theta0 " + show(p.theta0) + " p1 " +
                              show_point(p.p1) + " theta1 " + show(p.theta1) + " alpha " + show(p.alpha) + " solver " +
-                             o.solver + " winding " + std::to_string(*o.winding);
+                             std::string(to_string(o.solver)) + " winding " + std::to_string(*o.winding);
     G1HermiteResult r;
     if (!guarded(what, [&] { r = solve_g1_hermite(p, o); })) return 0;
     if (!r.usable()) return 0;

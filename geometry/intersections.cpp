@@ -228,7 +228,8 @@ struct PairSolver {
   // Newton on p_a(u) − p_b(v) = 0, its steps kept in the pair's box: true when it converged to a
   // root there (the pair holds at most one: transversal). Otherwise the pair is halved further.
   bool newton(const Span& sa, const Span& sb) {
-    const auto &ga = A.tracer.source(), &gb = B.tracer.source();
+    const auto& ga = A.tracer.source();  // two declarations: the sources may differ in type
+    const auto& gb = B.tracer.source();
     const double la = ga.ds_du(sa.seg), lb = gb.ds_du(sb.seg);
     const double wa = sa.u1 - sa.u0, wb = sb.u1 - sb.u0;
     const double alo = std::max(ga.ua(sa.seg), sa.u0 - 1e-9 * wa), ahi = std::min(ga.ub(sa.seg), sa.u1 + 1e-9 * wa);
