@@ -10,6 +10,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include "lac/common/error.hpp"
 #include "lac/export/to_bspline.hpp"
@@ -74,16 +75,22 @@ inline PreparedExport prepare_export(const ExportRequest& request, const ExportN
   return p;
 }
 
-/// Writes a certified B-spline to `path` in the prepared format when it is usable (nothing is
-/// written otherwise); returns it. InputError naming "export" when the file cannot be written.
-inline ExportResult write_export(ExportResult r, const std::string& path, const PreparedExport& p) {
-  if (r.usable()) {
+/// Writes a B-spline result (planar ExportResult, or a space one: export_space_curve.hpp) to
+/// `path` in the prepared format when it is usable (nothing is written otherwise); returns it.
+/// InputError naming "export" when the file cannot be written. The SVG options apply to planar
+/// B-splines (a space one has no SVG format).
+template <class R>
+R write_export(R r, const std::string& path, const PreparedExport& p) {
+  if (!r.usable()) return r;
+  const auto write = [&](auto&&... svg) {
 #ifdef LAC_WITH_OCCT
-    write_any(path, p.format, r.curve, p.svg);
+    write_any(path, p.format, r.curve, svg...);
 #else
-    write_file(path, p.format, r.curve, p.svg);
+    write_file(path, p.format, r.curve, svg...);
 #endif
-  }
+  };
+  if constexpr (std::is_same_v<decltype(r.curve), BSpline>) write(p.svg);
+  else write();
   return r;
 }
 

@@ -26,15 +26,7 @@ inline PreparedExport prepare_space_export(const ExportRequest& request, const E
 /// The B-spline of `curve` (to_bspline), written to `path` in the prepared format when usable
 /// (nothing is written otherwise). InputError naming "export" when the file cannot be written.
 inline SpaceExportResult export_curve(const SpaceCurve& curve, const std::string& path, const PreparedExport& p) {
-  SpaceExportResult r = to_bspline(curve, p.options);
-  if (r.usable()) {
-#ifdef LAC_WITH_OCCT
-    write_any(path, p.format, r.curve);
-#else
-    write_file(path, p.format, r.curve);
-#endif
-  }
-  return r;
+  return write_export(to_bspline(curve, p.options), path, p);
 }
 
 }  // namespace lac
