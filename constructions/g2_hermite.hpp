@@ -15,8 +15,9 @@
 // Initial estimates (G2Options::start): fast (small-angle triple clothoid) or bezier-grid (004
 // §3.4: quintic Bézier minimizing J_LAC, Eq. 45, over the 10^4-point leg grid).
 // The integrals ∫e^{iφ}dS of every trial curve take G2Options::integrator (any method of
-// integrators/registry.hpp; default gauss-legendre); the result is verified independently by
-// tanh-sinh.
+// integrators/registry.hpp; default gauss-legendre); the result is verified by the segment
+// kernel with its error bound (curves/planar/la_segment_kernel.hpp), or by tanh-sinh where the
+// kernel does not evaluate a segment.
 //
 // Windings. The turning target is Δ_k = φ1 − φ0 + 2πk, φ0, φ1 the end tangents relative to the
 // chord, each in (−π, π] (θ1 is never wrapped silently: every k is a different curve). With
@@ -106,8 +107,9 @@ struct G2Options {
   /// evaluations a trial curve; the default is ~4× what the slowest combination (simplex with rk4:
   /// 2.6·10^7) needs on ordinary data, seconds of CPU at most.
   long max_evaluations = 100'000'000;
-  /// Residuals re-evaluated with Boost tanh-sinh quadrature (independent of the integrator), and
-  /// the integrator's deviation from it reported as summary.error_estimate; without it the
+  /// Residuals re-evaluated by the segment kernel, whose error bound is added to the position
+  /// residual (Boost tanh-sinh where the kernel does not evaluate a segment), and the integrator's
+  /// deviation from that plus the bound reported as summary.error_estimate; without it the
   /// residuals are the integrator's own (no error estimate).
   bool verify = true;
   double accuracy = 1e-10;  ///< target: largest verified residual (relative to chord, rad, 1/chord) for status ok

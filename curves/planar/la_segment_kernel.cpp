@@ -649,9 +649,11 @@ std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail
       const double scale = std::exp(-alpha * std::log(h));  // q per unit u → per unit of [0, 1]
       const double qa = ta * scale, qb = tb * scale, p = 1 - 1 / alpha;
       v = k.evaluate_q(qa, qb);
-      // φ's total variation: |F(q)| = |q|^p/|p| from the zero of q (F(0) = 0 for α < 0) to each end,
-      // or |Δ| when q keeps its sign.
-      const double variation = ta * tb < 0 ? (std::pow(std::abs(qa), p) + std::pow(std::abs(qb), p)) / std::abs(p)
+      // φ's total variation: from the zero of q to each end the turning is |F(q)|/|dq/du| with
+      // |F(q)| = |q|^p/|p| (la_law.hpp; F(0) = 0 for α < 0) and dq/du = qb − qa on [0, 1]; |Δ| when
+      // q keeps its sign.
+      const double variation = ta * tb < 0 ? (std::pow(std::abs(qa), p) + std::pow(std::abs(qb), p)) /
+                                                 (std::abs(p) * std::abs(qb - qa))
                                             : std::abs(k.delta);
       extra = 2 * DBL_EPSILON / std::abs(alpha) * variation * h;
     }

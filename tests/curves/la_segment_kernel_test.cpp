@@ -123,3 +123,30 @@ TEST(LaSegmentKernel, TurningPastThePanelCapIsNotEvaluated) {
   long evaluations = 0;
   EXPECT_TRUE(power_limit_integral(1000.0, 0.5, evaluations).has_value());
 }
+
+namespace {
+
+// α < 0 through an inflection, the segment handed to the kernel as q values: the bound's rounding
+// term is 2ε/|α|·(φ's total variation)·length. The variation is measured here from φ itself (zero
+// of q to each end), for slopes of q far below and far above 1 (the term once left out the
+// division by the slope, which under-counted it for slow q and inflated it 10^5-fold for a fast one).
+TEST(LaSegmentKernel, RoundingTermOfTheBoundFollowsTheTurning) {
+  using namespace lac;
+  for (const double alpha : {-3.0, -2.0, -0.5}) {
+    for (const double s : {1e-3, 1.0, alpha < -1 ? 2e5 : 10.0}) {  // at α = −0.5, κ = q²: 2e5 turns too far
+      const LaLaw law{alpha, 1.0, false};
+      const detail::LinearQ q{0.0, 0.5, -s, 0.8 * s, 0.3};
+      const LaSegment seg(law, q);
+      const double u0 = *seg.inflection_u();
+      const double variation = std::abs(seg.phi_at(u0) - seg.phi_a()) + std::abs(seg.phi_b() - seg.phi_at(u0));
+      long evaluations = 0;
+      const auto I = segment_integral(law, q, evaluations);
+      ASSERT_TRUE(I.has_value()) << alpha << " " << s;
+      const double rounding = I->error - kLaKernelError * q.length();
+      const double want = 2 * DBL_EPSILON / std::abs(alpha) * variation * q.length();
+      EXPECT_NEAR(rounding, want, 1e-3 * want + 1e-30) << "alpha " << alpha << " slope " << s;
+    }
+  }
+}
+
+}  // namespace
