@@ -16,6 +16,7 @@ struct G2Args {
   std::string solver = "newton", start = "fast";
   QuadratureArgs quadrature{.integrator = "gauss-legendre"};
   bool no_fallback = false;
+  bool paper_joints = false;
   std::optional<int> winding;
   std::optional<double> max_turning;
 };
@@ -30,6 +31,7 @@ Report solve(const G2Args& a) {
   o.start = parse_g2_start(a.start);
   o.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   o.grid_fallback = !a.no_fallback;
+  o.free_joints = !a.paper_joints;
   o.winding = a.winding;
   if (a.max_turning) o.max_turning = *a.max_turning;
   o.accept = a.common.accept;
@@ -43,6 +45,7 @@ Report solve(const G2Args& a) {
   j["info"] = {{"start", std::string(to_string(res.info.start_used))},
                {"start_seconds", res.info.start_seconds},
                {"h", res.usable() ? number(res.info.h) : Json(nullptr)},
+               {"joints", res.usable() ? Json{res.info.joints[0], res.info.joints[1]} : Json(nullptr)},
                {"winding", res.info.winding},
                {"turning", number(res.info.turning)},
                {"max_turning", o.winding ? Json(nullptr) : Json(res.info.max_turning)},
@@ -67,6 +70,9 @@ void setup(CLI::App& app) {
   add_quadrature_options(*sub, a->quadrature);
   sub->add_option("--start", a->start, "Initial estimate: fast | bezier-grid")->capture_default_str();
   sub->add_flag("--no-fallback", a->no_fallback, "Do not retry from the Bezier-grid start when the fast start fails");
+  sub->add_flag("--paper-joints", a->paper_joints,
+                "Joints at S = 1/4, 3/4 only (004); by default, where neither start gives a curve with those, "
+                "the fast start is retried with joints at 1/8, 7/8 and 1/16, 15/16");
   sub->add_option("--winding", a->winding,
                   "Only the turning theta1 - theta0 + 2 pi k (angles relative to the chord, each in (-pi, pi]), "
                   "k in [-100, 100]; default: every turning up to --max-turning, least first");

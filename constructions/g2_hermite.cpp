@@ -164,13 +164,28 @@ void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detai
     res.info.start_used = start;
     return so;
   };
+  // 004's joints, from the fast start and then the Bézier grid; freed (o.free_joints) only where
+  // neither finds a curve with them.
+  const auto at_joints = [&p](double s1) { p.s1 = s1, p.s2 = 1 - s1; };
+  at_joints(kG2S1);
   detail::G2SolverOutcome so = run(o.start);
+  double solved_s1 = kG2S1;
   bool fell_back = false;
   if (so.status != Status::ok && o.start == G2Start::fast && o.grid_fallback && sum.evaluations < o.max_evaluations) {
     detail::G2SolverOutcome retry = run(G2Start::bezier_grid);
     if (retry.status == Status::ok) so = retry, fell_back = true;
   }
+  if (o.free_joints && o.solver != G2Solver::paper) {
+    for (const double s1 : {0.125, 0.0625}) {
+      if (so.status == Status::ok || sum.evaluations >= o.max_evaluations) break;
+      at_joints(s1);
+      detail::G2SolverOutcome retry = run(G2Start::fast);
+      if (retry.status == Status::ok) so = retry, solved_s1 = s1;
+    }
+  }
   if (so.status != Status::ok) return finish(so.status, so.message);
+  at_joints(solved_s1);
+  res.info.joints = {p.s1, p.s2};
   const std::array<detail::LinearQ, 3> segments = detail::g2_segments(p, so.h, so.q1, so.q2);
   res.info.h = so.h;
   res.info.coefficients = coefficients({p.law.alpha, p.law.sigma}, detail::plain_form(p.law, segments));

@@ -98,6 +98,10 @@ struct G2Options {
   /// When the solver fails from the fast start, retry once from the Bézier-grid start (status
   /// fell_back when that succeeds).
   bool grid_fallback = true;
+  /// Where neither start gives a curve with 004's joints (S = 1/4, 3/4), retry from the fast
+  /// start with the joints at 1/8, 7/8 and then 1/16, 15/16 (a longer middle segment; newton,
+  /// simplex, ceres — `paper` keeps 004's joints). false: 004's joints only.
+  bool free_joints = true;
   double tolerance = 1e-12;  ///< on the normalized residuals (chord = 1, angles in rad), max-norm
   /// newton, ceres: iterations; paper: outer iterations on h; simplex: 100× this many moves.
   int max_iterations = 60;
@@ -135,6 +139,7 @@ struct G2Info {
   G2Start start_used = G2Start::fast;  ///< the initial estimate of the run that gave the result
   double start_seconds = 0;            ///< part of summary.seconds spent on initial estimates
   double h = 0;                        ///< length in chord units (S = s / (h·chord))
+  std::array<double, 2> joints{kG2S1, kG2S2};  ///< S of the joints of the returned curve
   int winding = 0;                     ///< k of the returned curve (of a refusal: the least-turning k)
   double turning = 0;                  ///< Δ_k of the returned curve (of a refusal: the least turning)
   double max_turning = 0;              ///< without `winding`: every |Δ| ≤ this was searched (else 0)

@@ -111,8 +111,8 @@ G2StartEstimate g2_bezier_grid_start(const G2System& p) {
   if (!std::isfinite(best)) return g2_fast_start(p);  // every candidate has an infinite J: no better guess
   const double total = arc_length(best_ctrl, 1.0);
   e.h = total;
-  e.k1 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kG2S1 * total, total))) * total;
-  e.k2 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, kG2S2 * total, total))) * total;
+  e.k1 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, p.s1 * total, total))) * total;
+  e.k2 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, p.s2 * total, total))) * total;
   return e;
 }
 

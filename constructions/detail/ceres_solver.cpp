@@ -12,7 +12,7 @@ namespace lac::detail {
 NonlinearResidual g2_ten_unknown_residual(const G2System& p, long& evaluations) {
   return {10, [&p, &evaluations](ConstVectorMap x, VectorMap r) {
             const double h = std::exp(x[0]);
-            const double S[4] = {0.0, kG2S1, kG2S2, 1.0};
+            const double S[4] = {0.0, p.s1, p.s2, 1.0};
             std::array<LinearQ, 3> seg;
             for (int i = 0; i < 3; ++i) {
               const double c0 = x[1 + 3 * i], c1 = x[2 + 3 * i], psi = x[3 + 3 * i];
@@ -50,8 +50,8 @@ Eigen::VectorXd g2_ten_unknown_start(const G2System& p, const G2StartEstimate& s
 }
 
 // q at the joints from the segment on the left (continuity is itself a residual).
-std::array<double, 3> g2_ten_unknown_solution(const Eigen::VectorXd& x) {
-  return {std::exp(x[0]), x[1] * kG2S1 + x[2], x[4] * kG2S2 + x[5]};
+std::array<double, 3> g2_ten_unknown_solution(const G2System& p, const Eigen::VectorXd& x) {
+  return {std::exp(x[0]), x[1] * p.s1 + x[2], x[4] * p.s2 + x[5]};
 }
 
 }  // namespace lac::detail

@@ -36,9 +36,9 @@ std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, doubl
   const double q0 = p.law.q_of_kappa(p.kappa_s * h);
   const double q3 = p.law.q_of_kappa(p.kappa_e * h);
   std::array<LinearQ, 3> seg;
-  seg[0] = {0.0, kG2S1, q0, q1, p.phi_s};
-  seg[1] = {kG2S1, kG2S2, q1, q2, seg[0].phi_b(p.law)};
-  seg[2] = {kG2S2, 1.0, q2, q3, seg[1].phi_b(p.law)};
+  seg[0] = {0.0, p.s1, q0, q1, p.phi_s};
+  seg[1] = {p.s1, p.s2, q1, q2, seg[0].phi_b(p.law)};
+  seg[2] = {p.s2, 1.0, q2, q3, seg[1].phi_b(p.law)};
   return seg;
 }
 
@@ -63,7 +63,7 @@ G2StartEstimate g2_fast_start(const G2System& p) {
   // sin φ ≈ φ the end conditions become linear in κ̃1, κ̃2:
   //   ∫κ̃ dS = φe − φs,   ∫φ dS = φs + ∫(1 − S)κ̃ dS = 0.
   // Then h = 1 / ∫cos φ dS of that clothoid (exact quadrature); two passes.
-  const std::array<double, 4> nodes{0.0, kG2S1, kG2S2, 1.0};
+  const std::array<double, 4> nodes{0.0, p.s1, p.s2, 1.0};
   std::array<double, 4> A{}, B{};
   for (int i = 0; i < 3; ++i) {
     const double a = nodes[i], L = nodes[i + 1] - nodes[i];
@@ -74,7 +74,7 @@ G2StartEstimate g2_fast_start(const G2System& p) {
   }
   G2StartEstimate e;
   const LaLaw clothoid{-1.0, 1.0};
-  G2System c{clothoid, p.phi_s, p.phi_e, p.kappa_s, p.kappa_e, p.integrate};
+  G2System c{clothoid, p.phi_s, p.phi_e, p.kappa_s, p.kappa_e, p.integrate, p.s1, p.s2};
   for (int pass = 0; pass < 2; ++pass) {
     const double k0 = p.kappa_s * e.h, k3 = p.kappa_e * e.h;
     Eigen::Matrix2d M;
@@ -118,7 +118,7 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     const Eigen::VectorXd x0 = g2_ten_unknown_start(p, s);
     if (!x0.allFinite()) return unusable_start();
     r = solve_nonlinear(method, g2_ten_unknown_residual(p, out.evaluations), x0, no);
-    const auto [h, q1, q2] = g2_ten_unknown_solution(r.x);
+    const auto [h, q1, q2] = g2_ten_unknown_solution(p, r.x);
     out.h = h, out.q1 = q1, out.q2 = q2;
   } else {
     // Newton: forward differences, no step cap, the length changing by at most e^2 per trial, 30

@@ -19,6 +19,7 @@ struct G2System {
   double phi_s = 0, phi_e = 0;      ///< end tangent angles relative to the chord
   double kappa_s = 0, kappa_e = 0;  ///< end curvatures in chord units (κ·r)
   TrialIntegrator integrate;        ///< ∫e^{iφ}dS of trial segments, the construction's method
+  double s1 = kG2S1, s2 = kG2S2;    ///< the joints in S (004's 1/4, 3/4 unless freed)
 };
 
 /// Below this |α| (α ≠ 0) the G2 triple is held in the offset form of la_law.hpp (q carries log|κ|
@@ -72,6 +73,6 @@ G2SolverOutcome solve_g2_paper(const G2System& p, const G2StartEstimate& s, cons
 /// an estimate, and (h, q1, q2) of a solution.
 NonlinearResidual g2_ten_unknown_residual(const G2System& p, long& evaluations);
 Eigen::VectorXd g2_ten_unknown_start(const G2System& p, const G2StartEstimate& s);
-std::array<double, 3> g2_ten_unknown_solution(const Eigen::VectorXd& x);
+std::array<double, 3> g2_ten_unknown_solution(const G2System& p, const Eigen::VectorXd& x);
 
 }  // namespace lac::detail

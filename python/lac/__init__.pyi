@@ -103,7 +103,7 @@ def g1_hermite(*, p0: Optional[Point2] = None, theta0: Optional[float] = None, p
 def scurve(points: Sequence[Point2], *, alpha: float = -1.0, **options: Any) -> Result: ...
 def g2_hermite(*, p0: Point2, theta0: float, kappa0: float, p1: Point2, theta1: float, kappa1: float,
                alpha: float = -1.0, solver: str = "newton", integrator: str = "gauss-legendre",
-               start: str = "fast", fallback: bool = True, winding: Optional[int] = None,
+               start: str = "fast", fallback: bool = True, free_joints: bool = True, winding: Optional[int] = None,
                max_turning: float = ..., accuracy: float = 1e-10, accept: float = 1e-6, degrees: bool = False,
                **options: Any) -> Result: ...
 def chain(points: Sequence[Point2], *, alpha: float, thetas: Optional[Sequence[float]] = None,

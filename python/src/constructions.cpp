@@ -44,6 +44,8 @@ const std::vector<OptionRow<lac::G2Options>>& g2_table() {
       {"start", [](O& o, py::handle v) { o.start = lac::parse_g2_start(v.cast<std::string>()); }, "fast | bezier-grid"},
       {"fallback", [](O& o, py::handle v) { o.grid_fallback = v.cast<bool>(); },
        "retry from the Bezier-grid start (the CLI's --no-fallback is fallback=False)"},
+      {"free_joints", [](O& o, py::handle v) { o.free_joints = v.cast<bool>(); },
+       "where the joints S = 1/4, 3/4 of 004 give no curve, retry at 1/8 and 1/16 (the CLI's --paper-joints is False)"},
       {"winding", [](O& o, py::handle v) { o.winding = v.cast<int>(); },
        "only the turning theta1 - theta0 + 2 pi k (chord-relative angles); default: least turning"},
       {"max_turning", [](O& o, py::handle v) { o.max_turning = v.cast<double>(); },
@@ -54,7 +56,7 @@ const std::vector<OptionRow<lac::G2Options>>& g2_table() {
       {"max_iterations", [](O& o, py::handle v) { o.max_iterations = v.cast<int>(); }, ""},
       {"max_inner_iterations", [](O& o, py::handle v) { o.max_inner_iterations = v.cast<int>(); }, ""},
       {"max_evaluations", [](O& o, py::handle v) { o.max_evaluations = v.cast<long>(); }, ""},
-      {"verify", [](O& o, py::handle v) { o.verify = v.cast<bool>(); }, "tanh-sinh check of the residuals"},
+      {"verify", [](O& o, py::handle v) { o.verify = v.cast<bool>(); }, "check of the residuals by the segment kernel's bound"},
   };
   return t;
 }
@@ -193,6 +195,7 @@ Result g2_hermite(py::object p0, py::object theta0, py::object kappa0, py::objec
   r.info["start"] = std::string(lac::to_string(g.info.start_used));
   r.info["start_seconds"] = g.info.start_seconds;
   r.info["h"] = g.usable() ? py::object(py::float_(g.info.h)) : py::none();
+  r.info["joints"] = g.usable() ? py::object(py::make_tuple(g.info.joints[0], g.info.joints[1])) : py::none();
   r.info["winding"] = g.info.winding;
   r.info["turning"] = g.info.turning;
   r.info["max_turning"] = g.info.max_turning;

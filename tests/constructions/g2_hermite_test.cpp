@@ -438,5 +438,38 @@ TEST(G2Hermite, EveryIntegratorAndSolverMatchTheFresnelReference) {
   }
 }
 
+// α = −1, P0 = (0, 0), P1 = (1, 0), (θ0, θ1, κ0, κ1): problems the three-arc clothoid code solves
+// where neither start finds a curve of the least turning with 004's joints at S = 1/4, 3/4 (the
+// solutions put most of the length in the middle segment). With the joints freed (the default)
+// each is solved at 1/8 or 1/16 in that turning and meets its end conditions, sampled from the curve.
+TEST(G2Hermite, JointsAreFreedWhereThePapersJointsGiveNoCurve) {
+  const double rows[][4] = {{-1.3887207276250999, -1.3732639732148377, -2.9483680584915608, 1.58750176478204},
+                            {1.0850519903766926, 1.3855246964088122, 2.0120179341758657, -2.6976304196736365},
+                            {-1.0378050860344543, -1.3717728436489756, -2.4217450079339082, 2.7393952534090911},
+                            {-1.5054720643653581, -1.4026607034583556, -2.7865584795966085, 2.8819804995672502},
+                            {1.5612082842627757, -1.4045077036435873, 2.3192065174598149, 2.1225677778685634},
+                            {1.4143224977873663, -1.0470532045716943, 2.4547776072565082, 2.5247905806379052}};
+  for (const auto& row : rows) {
+    const G2Problem p{{{0, 0}, row[0], row[2]}, {{1, 0}, row[1], row[3]}, -1.0};
+    SCOPED_TRACE("theta0 " + std::to_string(row[0]));
+    const G2Result r = solve_g2(p);
+    ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+    G2Options paper_only;  // the same turning with 004's joints only (other turnings may have curves)
+    paper_only.free_joints = false;
+    paper_only.winding = r.info.winding;
+    const G2Result fixed = solve_g2(p, paper_only);
+    EXPECT_FALSE(fixed.usable()) << "004's joints solve it: the case no longer tests the freed joints";
+    EXPECT_TRUE(r.info.joints[0] == 0.125 || r.info.joints[0] == 0.0625) << r.info.joints[0];
+    EXPECT_DOUBLE_EQ(r.info.joints[1], 1 - r.info.joints[0]);
+    EXPECT_DOUBLE_EQ(r.info.coefficients[0].S_end, r.info.joints[0]);
+    const CurvePoint s0 = at(r, 0), s1 = at(r, 1);
+    EXPECT_LE(std::abs(s1.position - p.end.position), kEndTol);
+    EXPECT_LE(std::abs(s0.position - p.start.position), kEndTol);
+    EXPECT_LE(std::abs(wrap(s1.theta - p.end.theta)), kEndTol);
+    EXPECT_LE(std::abs(s1.kappa - p.end.kappa), kEndTol);
+    EXPECT_LE(std::abs(s0.kappa - p.start.kappa), kEndTol);
+  }
+}
+
 }  // namespace
 }  // namespace lac
