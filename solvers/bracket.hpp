@@ -159,9 +159,9 @@ struct Newton1dSample {
 };
 
 struct Newton1dOptions {
-  /// Converged when |f| ≤ f_atol at an acceptable point, or when a step is at most
-  /// max(x_atol, x_rtol·|x_new|) (then x is the new point, not evaluated); x_atol = x_rtol = 0:
-  /// only an exact zero step.
+  /// Converged when |f| ≤ f_atol at an acceptable point, or when a step from x is at most
+  /// x_atol + x_rtol·|x| > 0 (the result is then the new point, not evaluated); with
+  /// x_atol = x_rtol = 0 only f decides (a zero step is a stall).
   double f_atol = 0;
   double x_rtol = 0;
   double x_atol = 0;
@@ -171,8 +171,13 @@ struct Newton1dOptions {
   double xmax = std::numeric_limits<double>::infinity();
   /// Steps are clamped to this length (after the step rule).
   double max_step = std::numeric_limits<double>::infinity();
-  /// A sign bracket known in advance; otherwise the first two iterates of opposite signs form one.
+  /// A sign bracket known in advance; otherwise the first two iterates of opposite signs form one
+  /// when form_bracket (off for an f with poles, where a sign change need not enclose a root).
   std::optional<Bracket> bracket;
+  bool form_bracket = true;
+  /// A failed evaluation backs off halfway to the previous iterate (false) or ends the
+  /// iteration, not_converged (true).
+  bool stop_at_failure = false;
   /// Inside a bracket, bisection also when a step is longer than half the step before last
   /// (Numerical Recipes' rtsafe test): the step rule is not converging.
   bool bisect_slow_steps = true;
@@ -214,7 +219,8 @@ struct Newton1dStep {
 ///   otherwise next = step(x, sample, bracketed) (default x − f/f'), clamped to max_step, halfway
 ///   to a domain limit it crosses, and the bracket's midpoint when bracketed and the step
 ///   leaves the open bracket (or is slow, bisect_slow_steps); not finite → the bracket's
-///   midpoint, or not_converged without a bracket; next == x → not_converged.
+///   midpoint, or not_converged without a bracket; a step within the x tolerance → ok;
+///   next == x otherwise → not_converged.
 /// A custom step rule may return any proposal; the safeguards above still apply.
 template <class FD, class Step = Newton1dStep>
 Newton1dResult safeguarded_newton(FD&& fd, double x0, const Newton1dOptions& o, Step&& step = {}) {
@@ -239,6 +245,7 @@ Newton1dResult safeguarded_newton(FD&& fd, double x0, const Newton1dOptions& o, 
     ++r.evaluations;
     const Newton1dSample s = fd(x);
     if (!std::isfinite(s.f)) {  // no value here: back off
+      if (o.stop_at_failure) return finish(Status::not_converged);
       const double back = bracketed() ? 0.5 * (lo + hi) : 0.5 * (x + (std::isfinite(xp) ? xp : x0));
       if (back == x) return finish(Status::not_converged);
       x = back;
@@ -252,7 +259,7 @@ Newton1dResult safeguarded_newton(FD&& fd, double x0, const Newton1dOptions& o, 
     if (bracketed()) {
       if ((s.f > 0) == (f_lo > 0)) lo = x, f_lo = s.f;
       else hi = x;
-    } else if (std::isfinite(fp) && (s.f > 0) != (fp > 0)) {
+    } else if (o.form_bracket && std::isfinite(fp) && (s.f > 0) != (fp > 0)) {
       lo = xp, f_lo = fp, hi = x;
     }
     xp = x;
@@ -268,14 +275,15 @@ Newton1dResult safeguarded_newton(FD&& fd, double x0, const Newton1dOptions& o, 
       const bool slow = o.bisect_slow_steps && std::abs(next - x) > 0.5 * step_two_ago;
       if (slow || !(next > std::min(lo, hi) && next < std::max(lo, hi))) next = 0.5 * (lo + hi);
     }
+    const double x_tol = o.x_atol + o.x_rtol * std::abs(x);
+    if (x_tol > 0 && std::abs(next - x) <= x_tol) {
+      r.x = next;
+      r.f = next == x ? s.f : std::numeric_limits<double>::quiet_NaN();  // next not evaluated
+      return finish(Status::ok);
+    }
     if (next == x) return finish(Status::not_converged);
     step_two_ago = step_one_ago;
     step_one_ago = std::abs(next - x);
-    if (step_one_ago <= std::max(o.x_atol, o.x_rtol * std::abs(next))) {
-      r.x = next;
-      r.f = std::numeric_limits<double>::quiet_NaN();  // not evaluated
-      return finish(Status::ok);
-    }
     x = next;
   }
   return finish(Status::max_iterations);

@@ -317,6 +317,50 @@ TEST(SafeguardedNewton, BacksOffFromFailedEvaluations) {
   EXPECT_EQ(failed, 0);
 }
 
+// stop_at_failure: a failed evaluation ends the iteration instead of backing off.
+TEST(SafeguardedNewton, FailureCanEndTheIteration) {
+  int calls = 0;
+  auto fd = [&](double x) {
+    ++calls;
+    return x > 1 ? Newton1dSample{} : Newton1dSample{x * x - 0.81, 2 * x};
+  };
+  Newton1dOptions o;
+  o.f_atol = 1e-15;
+  o.stop_at_failure = true;
+  const Newton1dResult r = safeguarded_newton(fd, 0.1, o);  // the first step lands at 4.1
+  EXPECT_EQ(r.status, Status::not_converged);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(r.iterations, 2);
+  EXPECT_EQ(r.x, 0.1);  // the best point evaluated
+}
+
+// form_bracket = false: iterates of opposite signs do not confine the next steps.
+TEST(SafeguardedNewton, IteratesNeedNotFormBracket) {
+  std::vector<double> xs;
+  auto fd = [&](double x) {
+    xs.push_back(x);
+    return Newton1dSample{x - 3, 1.0};
+  };
+  // A step rule that first jumps from 0 past the root to 5 (f > 0) and then to −1 (f < 0).
+  const auto rule = [&](double x, const Newton1dSample& s, bool) {
+    if (xs.size() == 1) return 5.0;
+    if (xs.size() == 2) return -1.0;
+    return x - s.f / s.df;
+  };
+  Newton1dOptions o;
+  o.f_atol = 1e-15;
+  const Newton1dResult with = safeguarded_newton(fd, 0.0, o, rule);
+  ASSERT_EQ(with.status, Status::ok);
+  EXPECT_EQ(xs[2], 2.5);  // −1 leaves the bracket [0, 5]: its midpoint instead
+  EXPECT_TRUE(with.bracketed);
+  xs.clear();
+  o.form_bracket = false;
+  const Newton1dResult without = safeguarded_newton(fd, 0.0, o, rule);
+  ASSERT_EQ(without.status, Status::ok);
+  EXPECT_EQ(xs[2], -1.0);
+  EXPECT_FALSE(without.bracketed);
+}
+
 // A custom step rule (here: half Newton steps) still converges, and a point that is not
 // acceptable is not a root even with f = 0.
 TEST(SafeguardedNewton, StepRuleAndAcceptability) {
