@@ -50,8 +50,8 @@ struct PaperSolver {
   std::optional<double> solve_c10(double q2, double guess) {
     const int budget = std::min(50, 100 * o.max_inner_iterations - inner_steps);
     if (budget > 0) {
-      // A q1 outside the law's domain or a non-finite f is a failed evaluation (Newton backs off);
-      // no derivative where the middle segment is an arc (c20 ≈ 0).
+      // No value (q1 outside the law's domain, f not finite) or no derivative (the middle
+      // segment an arc, c20 ≈ 0): Newton stops and bisection takes over.
       const auto fd = [&](double c10) {
         const double q1 = q0 + c10 * kG2S1;
         if (!q_allowed(q1)) return Newton1dSample{};
@@ -60,12 +60,20 @@ struct PaperSolver {
         if (!std::isfinite(fv) || std::abs(c20) < 1e-9 * std::max(1.0, std::abs(q1))) return Newton1dSample{fv, NAN};
         return Newton1dSample{fv, kG2S1 * (dT_dqb(kG2S1, q0, q1) + dT_dqa(kG2S2 - kG2S1, q1, q2))};
       };
+      // The Newton step, halved until q1 stays in the law's domain.
+      const auto step_rule = [&](double c10, const Newton1dSample& s, bool) {
+        double step = -s.f / s.df;
+        for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kG2S1); ++k) step *= 0.5;
+        return c10 + step;
+      };
       Newton1dOptions no;
       no.f_atol = 1e-15;
       no.x_rtol = 1e-15;
       no.x_atol = 1e-15;
       no.max_iterations = budget;
-      const Newton1dResult r = safeguarded_newton(fd, guess, no);
+      no.form_bracket = false;  // 004's Newton: the analytic step, no bracket
+      no.stop_at_failure = true;
+      const Newton1dResult r = safeguarded_newton(fd, guess, no, step_rule);
       inner_steps += r.iterations;
       if (r.status == Status::ok) return r.x;
     }
