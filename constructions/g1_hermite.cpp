@@ -60,23 +60,25 @@ double power_guess(double alpha, double phi0, double delta) {
   const double r = (ka * kb > 0) ? (Q(kb) - Q(ka)) / (Q(kb) + Q(ka)) : (A > 0 ? 0.9 : -0.9);
   return delta * std::clamp(r, -0.9, 0.9);
 }
-// α = 0: Im∫e^{iφ} ≈ φ0 + Δ∫E = 0 with ∫E = 1/b − 1/expm1(b) (decreasing from 1 to 0).
+// α = 0: Im∫e^{iφ} ≈ φ0 + Δ∫E = 0 with ∫E = 1/b − 1/expm1(b) (decreasing from 1 to 0): Newton
+// kept in the sign bracket [−800, 800].
 double exponential_guess(double phi0, double delta) {
   const double mu = -phi0 / delta;
   if (!(mu > 0 && mu < 1)) return 0;
-  double lo = -800, hi = 800, b = 12 * (0.5 - mu);
-  for (int i = 0; i < 60; ++i) {
+  const auto fd = [mu](double b) {
     const bool small = std::abs(b) < 1e-4;
     const double em = small ? 0.0 : std::expm1(b);
-    const double v = (small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu;
-    if (v > 0) lo = b; else hi = b;
-    const double dM = small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em);
-    double next = b - v / dM;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - b) <= 1e-12 * (1 + std::abs(b))) return next;
-    b = next;
-  }
-  return b;
+    return Newton1dSample{(small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu,
+                          small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em)};
+  };
+  Newton1dOptions o;
+  o.x_atol = 1e-12;
+  o.x_rtol = 1e-12;
+  o.max_iterations = 60;
+  o.bracket = Bracket{-800, 800, 1 - mu, -mu};
+  o.bisect_slow_steps = false;
+  const double b = safeguarded_newton(fd, 12 * (0.5 - mu), o).x;
+  return std::isfinite(b) ? b : 0.0;
 }
 
 double wrap(double a) {
