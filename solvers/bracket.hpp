@@ -196,7 +196,7 @@ struct Newton1dOptions {
 
 struct Newton1dResult {
   /// ok (converged), max_iterations (the cap), not_converged (stalled: no usable step, or a
-  /// failed evaluation with nowhere to back off). x, f: the acceptable evaluated point with the
+  /// failed evaluation with stop_at_failure or nowhere to back off). x, f: the acceptable evaluated point with the
   /// smallest |f| (the step-converged point when converged by step); NaN when none.
   Status status = Status::not_converged;
   double x = std::numeric_limits<double>::quiet_NaN();
