@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "lac/common/error.hpp"
@@ -15,6 +16,7 @@
 #include "lac/constructions/triangle_g1.hpp"
 #include "lac/curves/planar/la_segment_kernel.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
+#include "lac/solvers/bracket.hpp"
 #include "lac/solvers/detail/method_registry.hpp"
 #include "lac/solvers/root_1d.hpp"
 
@@ -58,23 +60,25 @@ double power_guess(double alpha, double phi0, double delta) {
   const double r = (ka * kb > 0) ? (Q(kb) - Q(ka)) / (Q(kb) + Q(ka)) : (A > 0 ? 0.9 : -0.9);
   return delta * std::clamp(r, -0.9, 0.9);
 }
-// α = 0: Im∫e^{iφ} ≈ φ0 + Δ∫E = 0 with ∫E = 1/b − 1/expm1(b) (decreasing from 1 to 0).
+// α = 0: Im∫e^{iφ} ≈ φ0 + Δ∫E = 0 with ∫E = 1/b − 1/expm1(b) (decreasing from 1 to 0): Newton
+// kept in the sign bracket [−800, 800].
 double exponential_guess(double phi0, double delta) {
   const double mu = -phi0 / delta;
   if (!(mu > 0 && mu < 1)) return 0;
-  double lo = -800, hi = 800, b = 12 * (0.5 - mu);
-  for (int i = 0; i < 60; ++i) {
+  const auto fd = [mu](double b) {
     const bool small = std::abs(b) < 1e-4;
     const double em = small ? 0.0 : std::expm1(b);
-    const double v = (small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu;
-    if (v > 0) lo = b; else hi = b;
-    const double dM = small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em);
-    double next = b - v / dM;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - b) <= 1e-12 * (1 + std::abs(b))) return next;
-    b = next;
-  }
-  return b;
+    return Newton1dSample{(small ? 0.5 - b / 12 : 1 / b - 1 / em) - mu,
+                          small ? -1.0 / 12 : -1 / (b * b) + (em + 1) / (em * em)};
+  };
+  Newton1dOptions o;
+  o.x_atol = 1e-12;
+  o.x_rtol = 1e-12;
+  o.max_iterations = 60;
+  o.bracket = Bracket{-800, 800, 1 - mu, -mu};
+  o.bisect_slow_steps = false;
+  const double b = safeguarded_newton(fd, 12 * (0.5 - mu), o).x;
+  return std::isfinite(b) ? b : 0.0;
 }
 
 double wrap(double a) {
@@ -209,37 +213,6 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
   } catch (const InputError& e) {
     res.conclude(Status::numerical_failure, std::string("g1: the solution has no double-precision segment: ") + e.what());
   }
-}
-
-// A bracket [lo, hi] with a sign change of f around x0 (nearest first), within (xmin, xmax).
-struct Found {
-  bool ok = false;
-  double lo = 0, hi = 0, flo = 0, fhi = 0;
-};
-Found find_bracket(Normalized& nz, double x0, double xmin, double xmax, double step, int max_steps, int& used) {
-  Found b;
-  Trial t0 = nz.evaluate(x0);
-  ++used;
-  double xl = x0, fl = t0.ok ? t0.f : kNaN, xr = x0, fr = fl;
-  for (int j = 1; used < max_steps; ++j) {
-    for (int side : {1, -1}) {
-      const double x = x0 + side * j * step;
-      if (!(x > xmin && x < xmax)) continue;
-      const Trial t = nz.evaluate(x);
-      ++used;
-      if (!t.ok) continue;
-      double& xp = side > 0 ? xr : xl;
-      double& fp = side > 0 ? fr : fl;
-      if (std::isfinite(fp) && (fp > 0) != (t.f > 0) && t.I.real() > 0) {
-        b = {true, std::min(xp, x), std::max(xp, x), side > 0 ? fp : t.f, side > 0 ? t.f : fp};
-        return b;
-      }
-      xp = x;
-      fp = t.f;
-    }
-    if (!(x0 + j * step < xmax) && !(x0 - j * step > xmin)) break;
-  }
-  return b;
 }
 
 }  // namespace
@@ -481,8 +454,8 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
   // α ≥ 0 beyond half a turn: the certified scan straight away (it brackets every root it meets).
   const bool scan_first = pr.alpha >= 0 && std::abs(nz.delta) > kPi;
   if (o.solver.kind == G1Kind::automatic && !scan_first) {
-    // Newton, each step limited to 2π in x and kept inside the domain; once two iterates have
-    // opposite signs of f the step is kept inside their bracket (bisection otherwise).
+    // Newton (solvers/bracket.hpp), each step limited to 2π in x and kept inside the domain; once
+    // two iterates have opposite signs of f the step is kept inside their bracket (bisection otherwise).
     // α ≥ 0: f increases with x when Δ > 0 (x → ∞ puts the turning at the start, so the chord
     // tends to the end tangent, f → |I| sin φ1), decreases when Δ < 0: a step the derivative gets
     // wrong (flat tails) is replaced by a doubling step toward the root.
@@ -494,69 +467,74 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
     const double f_lo = rising > 0 ? f_at_xmin : f_at_xmax, f_hi = rising > 0 ? f_at_xmax : f_at_xmin;
     const bool logit = rising != 0 && f_lo < 0 && f_hi > 0;
     const double g_root = logit ? std::log(-f_lo / f_hi) : 0;
-    double x = x0, xp = kNaN, fp = kNaN, blo = kNaN, bhi = kNaN, flo = kNaN, jump = 1;
-    for (int it = 0; it < o.max_iterations; ++it) {
-      ++sum.iterations;
-      const Trial t = nz.evaluate(x);
-      if (!t.ok) {  // no curve here (e.g. beyond the turning the kernel resolves): back off
-        const double back = std::isfinite(blo) ? 0.5 * (blo + bhi) : 0.5 * (x + (std::isfinite(xp) ? xp : x0));
-        if (back == x) break;
-        x = back;
-        continue;
+    double jump = 1;
+    const auto step_rule = [&](double x, const Newton1dSample& s, bool bracketed) {
+      double next = x - s.f / s.df;
+      if (logit && s.f > f_lo && s.f < f_hi && s.df * rising > 0) {
+        const double a = s.f - f_lo, b = f_hi - s.f;
+        next = x - (std::log(a / b) - g_root) / (s.df * (1 / a + 1 / b));
       }
-      if (!best.ok || std::abs(t.f) < std::abs(best.f)) best = t, xbest = x;
-      if (std::abs(t.f) <= o.tolerance && t.I.real() > 0) {
-        converged = true;
-        break;
-      }
-      if (std::isfinite(blo)) {
-        if ((t.f > 0) == (flo > 0)) blo = x, flo = t.f;
-        else bhi = x;
-      } else if (std::isfinite(fp) && (t.f > 0) != (fp > 0)) {
-        blo = xp, flo = fp, bhi = x;
-      }
-      xp = x;
-      fp = t.f;
-      double next = x - t.f / t.df;
-      if (logit && t.f > f_lo && t.f < f_hi && t.df * rising > 0) {
-        const double a = t.f - f_lo, b = f_hi - t.f;
-        next = x - (std::log(a / b) - g_root) / (t.df * (1 / a + 1 / b));
-      }
-      if (!std::isfinite(next)) next = x + (t.f > 0 ? -step : step);
-      if (rising != 0 && !std::isfinite(blo) && (t.df * rising <= 0 || std::abs(next - x) > 2 * kPi)) {
-        next = x - (t.f > 0 ? 1.0 : -1.0) * rising * jump;
+      if (!std::isfinite(next)) next = x + (s.f > 0 ? -step : step);
+      if (rising != 0 && !bracketed && (s.df * rising <= 0 || std::abs(next - x) > 2 * kPi)) {
+        next = x - (s.f > 0 ? 1.0 : -1.0) * rising * jump;
         jump *= 2;
-      } else {
-        next = std::clamp(next, x - 2 * kPi, x + 2 * kPi);
+        return next;
       }
-      if (!(next > xmin && next < xmax)) next = 0.5 * (x + (next <= xmin ? xmin : xmax));
-      if (std::isfinite(blo) && !(next > std::min(blo, bhi) && next < std::max(blo, bhi))) next = 0.5 * (blo + bhi);
-      if (next == x) break;
-      x = next;
-    }
+      return std::clamp(next, x - 2 * kPi, x + 2 * kPi);
+    };
+    // A trial without a curve (e.g. beyond the turning the kernel resolves) is a failed
+    // evaluation (Newton backs off); a root with Re ∫ <= 0 runs away from p1 and is not accepted.
+    const auto fd = [&](double x) {
+      const Trial t = nz.evaluate(x);
+      if (!t.ok) return Newton1dSample{};
+      if (!best.ok || std::abs(t.f) < std::abs(best.f)) best = t, xbest = x;
+      return Newton1dSample{t.f, t.df, t.I.real() > 0};
+    };
+    Newton1dOptions no;
+    no.f_atol = o.tolerance;
+    no.max_iterations = o.max_iterations;
+    no.xmin = xmin;
+    no.xmax = xmax;
+    no.bisect_slow_steps = false;  // the step rule above handles the tails
+    const Newton1dResult nr = safeguarded_newton(fd, x0, no, step_rule);
+    sum.iterations += nr.iterations;
+    converged = nr.status == Status::ok;
   }
   std::string failure;
   if (!converged) {
     // A sign bracket (α ≥ 0: from the certified scan, which may also prove that there is none;
     // α < 0: around the guess), then the chosen root method (auto: TOMS 748).
     int used = 0;
-    Found b;
+    std::optional<Bracket> b;
     if (pr.alpha >= 0) {
       const Scan s = certified_scan(nz, shape_limits(nz), o.max_bracket_steps, used);
       sum.iterations += used;
       if (s.kind == Scan::none) return none(kProofScan);
-      if (s.kind == Scan::bracket) b = {true, s.lo, s.hi, s.flo, s.fhi};
+      if (s.kind == Scan::bracket) b = Bracket{s.lo, s.hi, s.flo, s.fhi};
       else failure = s.why;
     } else {
-      b = find_bracket(nz, x0, xmin, xmax, step, o.max_bracket_steps, used);
-      sum.iterations += used;
-      if (!b.ok) failure = "no sign change of the reduced equation within max_bracket_steps of the guess";
+      // Steps of `step` on both sides of the guess, nearest first; a trial without a curve or
+      // with Re ∫ <= 0 (running away from p1) is a failed probe.
+      BracketSearchOptions bo;
+      bo.step = step;
+      bo.xmin = xmin;
+      bo.xmax = xmax;
+      bo.max_probes = o.max_bracket_steps;
+      const BracketSearchResult s = search_bracket(
+          [&](double x) {
+            const Trial t = nz.evaluate(x);
+            return t.ok && t.I.real() > 0 ? t.f : kNaN;
+          },
+          x0, bo);
+      sum.iterations += s.probes;
+      if (s.found) b = s.bracket;
+      else failure = "no sign change of the reduced equation within max_bracket_steps of the guess";
       if (nz.exhausted()) failure = "evaluation budget max_evaluations = " + std::to_string(o.max_evaluations) + " spent";
     }
-    if (b.ok && b.lo == b.hi) {  // the scan met a root exactly
-      const Trial t = nz.evaluate(b.lo);
-      if (t.ok) best = t, xbest = b.lo, converged = std::abs(t.f) <= o.tolerance && t.I.real() > 0;
-    } else if (b.ok) {
+    if (b && b->lo == b->hi) {  // the scan or the search met a root exactly
+      const Trial t = nz.evaluate(b->lo);
+      if (t.ok) best = t, xbest = b->lo, converged = std::abs(t.f) <= o.tolerance && t.I.real() > 0;
+    } else if (b) {
       const RootMethod m = o.solver.root;  // toms748 for auto
       RootOptions ro;
       ro.x_rtol = 1e-15;
@@ -567,7 +545,7 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
         const Trial t = nz.evaluate(x);
         return t.ok ? t.f : kNaN;
       };
-      const RootResult rr = find_root(m, f, Bracket{b.lo, b.hi, b.flo, b.fhi}, ro);
+      const RootResult rr = find_root(m, f, *b, ro);
       sum.iterations += rr.iterations;
       if (std::isfinite(rr.root)) {
         const Trial t = nz.evaluate(rr.root);

@@ -11,6 +11,7 @@
 #include "lac/common/numeric.hpp"
 #include "lac/constructions/detail/tangent_integral.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/solvers/bracket.hpp"
 
 namespace lac {
 namespace {
@@ -158,12 +159,17 @@ SCurveResult solve_s_curve(const std::array<std::complex<double>, 4>& P, double 
     return std::arg(end) - phi_e;
   };
   double g_lo = g(lo), g_hi = g(hi);
-  for (int k = 0;
-       k < o.bracket_doublings && !std::isfinite(lambda_reach) && std::isfinite(g_hi) && (g_hi > 0) == (g_lo > 0);
-       ++k) {
-    lo = hi, g_lo = g_hi;
-    hi *= 2;
-    g_hi = g(hi);
+  if (!std::isfinite(lambda_reach) && std::isfinite(g_hi) && (g_hi > 0) == (g_lo > 0)) {
+    // No upper end: double hi until the sign changes; a non-finite end direction ends the search.
+    BracketSearchOptions bo;
+    bo.center = 0.0;
+    bo.step = 2;
+    bo.growth = 2;
+    bo.max_probes = o.bracket_doublings;
+    bo.stop_at_failure = true;
+    const BracketSearchResult s = search_bracket(g, hi, bo, g_hi);
+    if (s.found) lo = s.bracket.lo, g_lo = s.bracket.f_lo, hi = s.bracket.hi, g_hi = s.bracket.f_hi;
+    else lo = s.previous_x, g_lo = s.previous_f, hi = s.last_x, g_hi = s.last_f;
   }
   if (!std::isfinite(g_lo) || !std::isfinite(g_hi))
     return fail(Status::numerical_failure,

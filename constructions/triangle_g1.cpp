@@ -12,6 +12,7 @@
 #include "lac/common/error.hpp"
 #include "lac/curves/planar/la_position.hpp"
 #include "lac/curves/planar/standard_form.hpp"
+#include "lac/solvers/bracket.hpp"
 
 namespace lac {
 namespace {
@@ -381,30 +382,22 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   double x_root = p.u_max;
   if (std::abs(f0) > o.root.f_atol) {
     // Grow the bracket toward the end of the range (x → 0) until the sign changes (001:
-    // "extended" bisection). In x the bracket is [lo, hi] = [where f ≥ 0, where f < 0].
-    Bracket b{p.u_max, p.u_max, 0.0, f0};
-    bool found = false, unrepresentable_trial = false;
+    // "extended" bisection): probes u_max·0.5·r^k. In x the bracket is [lo, hi] = [where f ≥ 0,
+    // where f < 0]. A trial without a value is not representable (or not integrable) any closer
+    // to the end of the range: the search ends there.
     // Configuration (a) resolves Λ0 to ~1e-16 relative: probes down to 0.5·10^−12 of the range;
     // the end form resolves Λ' over the whole double range: probes a factor 10^−4 apart.
-    const double probe_step = end_form ? 1e-4 : 0.1;
-    double delta = 0.5;
-    for (int k = 0; k < o.max_bracket_probes; ++k, delta *= probe_step) {
-      const double x = p.u_max * delta;
-      const double fx = mismatch(x);
-      ++info.bracket_probes;
-      if (!std::isfinite(fx)) {  // not representable (or not integrable) any closer to the end of the range
-        unrepresentable_trial = true;
-        break;
-      }
-      if (fx >= 0) {
-        b.lo = x;
-        b.f_lo = fx;
-        found = true;
-        break;
-      }
-      b.hi = x;
-      b.f_hi = fx;
-    }
+    BracketSearchOptions bo;
+    bo.center = 0.0;
+    bo.step = 0.5;
+    bo.growth = end_form ? 1e-4 : 0.1;
+    bo.max_probes = o.max_bracket_probes;
+    bo.stop_at_failure = true;
+    const BracketSearchResult s = search_bracket(mismatch, p.u_max, bo, f0);
+    info.bracket_probes = s.probes;
+    const bool found = s.found, unrepresentable_trial = s.stopped_at_failure;
+    Bracket b = s.bracket;
+    if (!found) b.hi = unrepresentable_trial ? s.previous_x : s.last_x;  // the last probe with f < 0
     if (!found) {
       // φ increases with Λ0: no curve iff the target is at or above φ's limit at the end of the
       // range (the same limit in either form of the curves).

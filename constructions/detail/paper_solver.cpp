@@ -1,11 +1,11 @@
 // 004 §3.3: outer iteration on h, bisection on c30 for Eq. (33), Newton on c10 for Eq. (41).
-// Both bisections are the 1-D registry's (solvers/root_1d.hpp); the inner Newton stays here: it
-// uses the analytic derivative of Eq. (41) (Eqs. 42–44), which no registry method takes (the
-// registry's secant/"newton" differences f instead).
+// Both bisections are the 1-D registry's (solvers/root_1d.hpp), their brackets and the inner
+// Newton with the analytic derivative of Eq. (41) (Eqs. 42–44) solvers/bracket.hpp's.
 #include <cmath>
 #include <optional>
 
 #include "lac/constructions/detail/g2_system.hpp"
+#include "lac/solvers/bracket.hpp"
 #include "lac/solvers/root_1d.hpp"
 
 namespace lac::detail {
@@ -48,21 +48,34 @@ struct PaperSolver {
   // c10 solving f = 0 for the given q2: Newton with the analytic derivative (Eqs. 42–44), and
   // bisection where Newton is unusable (c20 ≈ 0, Appendix A) or does not converge.
   std::optional<double> solve_c10(double q2, double guess) {
-    double c10 = guess;
-    for (int it = 0; it < 50 && inner_steps < 100 * o.max_inner_iterations; ++it, ++inner_steps) {
-      const double q1 = q0 + c10 * kG2S1;
-      if (!q_allowed(q1)) break;
-      const double fv = f(c10, q2);
-      if (!std::isfinite(fv)) break;
-      if (std::abs(fv) <= 1e-15) return c10;
-      const double c20 = (q2 - q1) / (kG2S2 - kG2S1);
-      if (std::abs(c20) < 1e-9 * std::max(1.0, std::abs(q1))) break;  // arc: Appendix A
-      const double df = kG2S1 * (dT_dqb(kG2S1, q0, q1) + dT_dqa(kG2S2 - kG2S1, q1, q2));
-      if (!std::isfinite(df) || df == 0) break;
-      double step = -fv / df;
-      for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kG2S1); ++k) step *= 0.5;
-      c10 += step;
-      if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(c10))) return c10;
+    const int budget = std::min(50, 100 * o.max_inner_iterations - inner_steps);
+    if (budget > 0) {
+      // No value (q1 outside the law's domain, f not finite) or no derivative (the middle
+      // segment an arc, c20 ≈ 0): Newton stops and bisection takes over.
+      const auto fd = [&](double c10) {
+        const double q1 = q0 + c10 * kG2S1;
+        if (!q_allowed(q1)) return Newton1dSample{};
+        const double fv = f(c10, q2);
+        const double c20 = (q2 - q1) / (kG2S2 - kG2S1);
+        if (!std::isfinite(fv) || std::abs(c20) < 1e-9 * std::max(1.0, std::abs(q1))) return Newton1dSample{fv, NAN};
+        return Newton1dSample{fv, kG2S1 * (dT_dqb(kG2S1, q0, q1) + dT_dqa(kG2S2 - kG2S1, q1, q2))};
+      };
+      // The Newton step, halved until q1 stays in the law's domain.
+      const auto step_rule = [&](double c10, const Newton1dSample& s, bool) {
+        double step = -s.f / s.df;
+        for (int k = 0; k < 60 && !q_allowed(q0 + (c10 + step) * kG2S1); ++k) step *= 0.5;
+        return c10 + step;
+      };
+      Newton1dOptions no;
+      no.f_atol = 1e-15;
+      no.x_rtol = 1e-15;
+      no.x_atol = 1e-15;
+      no.max_iterations = budget;
+      no.form_bracket = false;  // 004's Newton: the analytic step, no bracket
+      no.stop_at_failure = true;
+      const Newton1dResult r = safeguarded_newton(fd, guess, no, step_rule);
+      inner_steps += r.iterations;
+      if (r.status == Status::ok) return r.x;
     }
     return bisect_c10(q2, guess);
   }
@@ -77,19 +90,16 @@ struct PaperSolver {
       flo = fv(lo);
     }
     if (!std::isfinite(flo)) return std::nullopt;
-    double hi = lo, fhi = flo, step = 0.1 * std::max(1.0, std::abs(lo));
-    bool found = false;
-    for (int k = 0; k < 80 && !found; ++k, step *= 2) {
-      for (double dir : {1.0, -1.0}) {
-        const double c = lo + dir * step, v = fv(c);
-        if (std::isfinite(v) && (v > 0) != (flo > 0)) {
-          hi = c, fhi = v, found = true;
-          break;
-        }
-      }
-    }
-    if (!found) return std::nullopt;
-    const Bracket b = lo < hi ? Bracket{lo, hi, flo, fhi} : Bracket{hi, lo, fhi, flo};
+    BracketSearchOptions bo;
+    bo.step = 0.1 * std::max(1.0, std::abs(lo));
+    bo.growth = 2;
+    bo.max_probes = 160;  // 80 doublings each way
+    bo.from_start = true;
+    const BracketSearchResult s = search_bracket(fv, lo, bo, flo);
+    if (!s.found) return std::nullopt;
+    const Bracket& b = s.bracket;
+    if (b.f_lo == 0) return b.lo;
+    if (b.f_hi == 0) return b.hi;
     const RootResult r = bisection(fv, b, bisection_options(o));
     inner_steps += r.iterations;
     if (r.status == Status::numerical_failure) return std::nullopt;
@@ -159,23 +169,24 @@ G2SolverOutcome solve_g2_paper(const G2System& p, const G2StartEstimate& s, cons
     }
     PaperSolver::Eval best = e0;
     if (e0.g != 0) {
-      bool found = false;
-      double step = 0.05 * std::max(1.0, std::abs(c30));
-      for (int k = 0; k < 60 && !found; ++k, step *= 2) {
-        for (double dir : {1.0, -1.0}) {
-          const PaperSolver::Eval e = ps.eval_c30(h, c30 + dir * step, e0.c10);
-          if (std::isfinite(e.g) && (e.g > 0) != (e0.g > 0)) {
-            best = ps.bisect_c30(h, e0, e);
-            found = true;
-            break;
-          }
-        }
-      }
-      if (!found) {
+      // Doubling steps both ways from c30, each probe compared with c30's g; the bisection
+      // starts from e0 (its c10 seeds the inner Newton) and the probe that changed sign.
+      PaperSolver::Eval last;
+      const auto g = [&](double c) {
+        last = ps.eval_c30(h, c, e0.c10);
+        return last.g;
+      };
+      BracketSearchOptions bo;
+      bo.step = 0.05 * std::max(1.0, std::abs(c30));
+      bo.growth = 2;
+      bo.max_probes = 120;  // 60 doublings each way
+      bo.from_start = true;
+      if (!search_bracket(g, c30, bo, e0.g).found) {
         out.status = Status::not_converged;
         out.message = "paper: no sign change of Eq. (33) found in c30 (60 doubling steps each way)";
         break;
       }
+      best = ps.bisect_c30(h, e0, last);
     }
     c30 = best.c30;
     c10 = best.c10;
