@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
     std::cerr << "G2 alpha " << alpha << ": lac " << lac_row.verified << "/" << lac_row.problems << " verified, median "
               << lac_row.median() << " us\n";
   }
-  // lac's G2 without the tanh-sinh re-evaluation of the result (G2Options::verify = false), at α = −1:
+  // lac's G2 without the re-evaluation of the result (G2Options::verify = false), at α = −1:
   // the solve alone, as the peer returns it.
   {
     G2Options o;
@@ -375,8 +375,8 @@ int main(int argc, char** argv) {
       std::to_string(repeats) +
       " times (once when a call takes more than " + io::fmt(slow_us) +
       " µs), steady_clock around each call, the least kept per problem; at α = −1 the lac and peer calls alternate. "
-      "Median and p90 are over the problems. lac's G2 default re-evaluates the result with tanh-sinh "
-      "(`verify`), part of its time; the last row is the same solve without it.\n\n"
+      "Median and p90 are over the problems. lac's G2 default re-evaluates the result by its segment kernel "
+      "with the kernel's error bound (`verify`), part of its time; the last row is the same solve without it.\n\n"
       "Columns: *own flag* — lac: status usable; Clothoids: G1 returned without exception, G2 returned an "
       "iteration count. *verified* — own flag and the curve, evaluated afterwards, meets the data within 1e-6 "
       "(lac::kDefaultAccept; chord = 1): end point and end tangent angle (G1), plus both end curvatures and "
