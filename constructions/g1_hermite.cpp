@@ -513,19 +513,22 @@ Attempt attempt_turning(const G1HermiteProblem& pr, const G1HermiteOptions& o, N
       if (s.kind == Scan::bracket) b = Bracket{s.lo, s.hi, s.flo, s.fhi};
       else failure = s.why;
     } else {
-      // Steps of `step` on both sides of the guess, nearest first; a trial without a curve or
-      // with Re ∫ <= 0 (running away from p1) is a failed probe.
+      // Steps of `step` on both sides of the guess, nearest first; a trial without a curve is a
+      // failed probe, and one with Re ∫ <= 0 (running away from p1) may not close a bracket but
+      // is its side's next comparison point.
       BracketSearchOptions bo;
       bo.step = step;
       bo.xmin = xmin;
       bo.xmax = xmax;
       bo.max_probes = o.max_bracket_steps;
+      bool toward_p1 = false;  // Re ∫ > 0 at the last probe
       const BracketSearchResult s = search_bracket(
           [&](double x) {
             const Trial t = nz.evaluate(x);
-            return t.ok && t.I.real() > 0 ? t.f : kNaN;
+            toward_p1 = t.ok && t.I.real() > 0;
+            return t.ok ? t.f : kNaN;
           },
-          x0, bo);
+          x0, bo, std::nullopt, [&](double) { return toward_p1; });
       sum.iterations += s.probes;
       if (s.found) b = s.bracket;
       else failure = "no sign change of the reduced equation within max_bracket_steps of the guess";

@@ -82,13 +82,21 @@ struct BracketSearchResult {
   double previous_f = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// Any probe may end a bracket (the default of search_bracket's `closes`).
+struct AnyProbeCloses {
+  bool operator()(double) const { return true; }
+};
+
 /// Looks for a sign change of f from x0 (f0: f(x0) when known, not evaluated again). A sign
 /// change is a probe with f = 0 or with (f > 0) ≠ (f_ref > 0), f_ref the comparison value of
-/// BracketSearchOptions::from_start. Ends at the first sign change, at max_probes, at a failed
-/// probe with stop_at_failure, or when every side has left (xmin, xmax). A non-finite f(x0) is
-/// replaced on each side by its first finite probe.
-template <class F>
-BracketSearchResult search_bracket(F&& f, double x0, const BracketSearchOptions& o, std::optional<double> f0 = {}) {
+/// BracketSearchOptions::from_start, where closes(probe) holds (called right after f at that
+/// probe); a finite probe that may not close a bracket still becomes its side's comparison point.
+/// Ends at the first sign change, at max_probes, at a failed probe with stop_at_failure, or when
+/// every side has left (xmin, xmax). A non-finite f(x0) is replaced on each side by its first
+/// finite probe.
+template <class F, class Closes = AnyProbeCloses>
+BracketSearchResult search_bracket(F&& f, double x0, const BracketSearchOptions& o, std::optional<double> f0 = {},
+                                   Closes&& closes = {}) {
   o.validate();
   if (!std::isfinite(x0)) throw_input_error("search_bracket", "x0", x0, "finite");
   BracketSearchResult r;
@@ -128,7 +136,7 @@ BracketSearchResult search_bracket(F&& f, double x0, const BracketSearchOptions&
       return false;
     }
     const double ref_x = o.from_start ? x0 : side_x[s], ref_f = o.from_start ? fx0 : side_f[s];
-    if (std::isfinite(ref_f) && (v == 0 || (v > 0) != (ref_f > 0))) {
+    if (std::isfinite(ref_f) && (v == 0 || (v > 0) != (ref_f > 0)) && closes(x)) {
       r.found = true;
       r.bracket = ref_x < x ? Bracket{ref_x, x, ref_f, v} : Bracket{x, ref_x, v, ref_f};
       return true;

@@ -30,6 +30,25 @@ TEST(BracketSearch, FindsNearestPairBothSidesNearestFirst) {
   EXPECT_EQ(xs, (std::vector<double>{0, 1, -1, 2, -2, 3}));
 }
 
+// A probe that may not close a bracket (closes = false) is still its side's comparison point:
+// f = x − 2.5 with the probe at 3 refused, then the pair [3, 4] is not a sign change and the
+// search goes on to the other side's root; the sign change across 2.5 is closed only from 3.
+TEST(BracketSearch, ProbeThatMayNotCloseStillMovesTheComparisonPoint) {
+  auto f = [](double x) { return x < 3.5 ? x - 2.5 : x - 5.5; };  // roots at 2.5 and 5.5
+  const auto closes = [](double x) { return x != 3.0; };
+  BracketSearchOptions o;
+  o.sides = BracketSides::up;
+  const BracketSearchResult r = search_bracket(f, 0.0, o, std::nullopt, closes);
+  ASSERT_TRUE(r.found);
+  // 1, 2 (f < 0), 3 (f > 0, refused: comparison point 3), 4 (f < 0 against 3: closes [3, 4]).
+  EXPECT_EQ(r.bracket.lo, 3.0);
+  EXPECT_EQ(r.bracket.hi, 4.0);
+  const BracketSearchResult plain = search_bracket(f, 0.0, o);
+  ASSERT_TRUE(plain.found);
+  EXPECT_EQ(plain.bracket.lo, 2.0);
+  EXPECT_EQ(plain.bracket.hi, 3.0);
+}
+
 TEST(BracketSearch, FindsOnTheLowerSide) {
   auto f = [](double x) { return x + 1.5; };
   const BracketSearchResult r = search_bracket(f, 0.0, BracketSearchOptions{});
