@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "lac/curves/planar/la_segment_kernel.hpp"
+
 namespace lac::detail {
 namespace {
 
@@ -85,7 +87,10 @@ G2StartEstimate g2_fast_start(const G2System& p) {
     e.k2 = k(1);
     const auto seg = g2_segments(c, e.h, e.k1, e.k2);
     std::complex<double> sum{};
-    for (const auto& s : seg) sum += integrate_tangent(clothoid, s, e.evaluations);
+    for (const auto& s : seg) {
+      const auto k = segment_integral(clothoid, s, e.evaluations);
+      sum += k ? k->value : integrate_tangent(clothoid, s, e.evaluations);
+    }
     if (!(sum.real() > 0.05) || !std::isfinite(sum.real())) break;  // keep the last usable h
     const double h_new = 1.0 / sum.real();
     e.k1 *= h_new / e.h;
