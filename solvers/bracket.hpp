@@ -177,8 +177,6 @@ struct Newton1dOptions {
   /// Open domain: a step past a limit goes halfway from x to that limit.
   double xmin = -std::numeric_limits<double>::infinity();
   double xmax = std::numeric_limits<double>::infinity();
-  /// Steps are clamped to this length (after the step rule).
-  double max_step = std::numeric_limits<double>::infinity();
   /// A sign bracket known in advance; otherwise the first two iterates of opposite signs form one
   /// when form_bracket (off for an f with poles, where a sign change need not enclose a root).
   std::optional<Bracket> bracket;
@@ -198,7 +196,6 @@ struct Newton1dOptions {
       throw_input_error("safeguarded_newton", "max_iterations", max_iterations, "[1, 100000]");
     if (std::isnan(xmin) || std::isnan(xmax) || !(xmin < xmax))
       throw_input_error("safeguarded_newton", "xmin", xmin, "below xmax");
-    if (!(max_step > 0)) throw_input_error("safeguarded_newton", "max_step", max_step, "(0, inf]");
   }
 };
 
@@ -224,7 +221,7 @@ struct Newton1dStep {
 ///   failed evaluation → back off halfway to the previous iterate (the bracket's midpoint when
 ///     bracketed); no back-off possible → not_converged;
 ///   |f| ≤ f_atol at an acceptable point → ok;
-///   otherwise next = step(x, sample, bracketed) (default x − f/f'), clamped to max_step, halfway
+///   otherwise next = step(x, sample, bracketed) (default x − f/f'), halfway
 ///   to a domain limit it crosses, and the bracket's midpoint when bracketed and the step
 ///   leaves the open bracket (or is slow, bisect_slow_steps); not finite → the bracket's
 ///   midpoint, or not_converged without a bracket; a step within the x tolerance → ok;
@@ -277,7 +274,6 @@ Newton1dResult safeguarded_newton(FD&& fd, double x0, const Newton1dOptions& o, 
       if (!bracketed()) return finish(Status::not_converged);
       next = 0.5 * (lo + hi);
     }
-    next = std::clamp(next, x - o.max_step, x + o.max_step);
     if (!(next > o.xmin && next < o.xmax)) next = 0.5 * (x + (next <= o.xmin ? o.xmin : o.xmax));
     if (bracketed()) {
       const bool slow = o.bisect_slow_steps && std::abs(next - x) > 0.5 * step_two_ago;

@@ -58,8 +58,9 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
 /// q of a joint curvature estimate, forced onto the sign the law allows (α ≥ 0: sign σ, ≠ 0).
 double g2_joint_q(const G2System& p, double kappa_tilde, double h);
 
-/// The initial estimates integrate their clothoid or Bézier with their own fixed Gauss–Legendre
-/// rule (part of the estimate, not of the solve).
+/// The initial estimates integrate with their own rules, not the construction's integrator (part
+/// of the estimate, not of the solve): the fast start's clothoid by the segment kernel
+/// (curves/planar/la_segment_kernel.hpp), the Bézier grid by a fixed Gauss–Legendre rule.
 G2StartEstimate g2_fast_start(const G2System& p);
 G2StartEstimate g2_bezier_grid_start(const G2System& p);
 
