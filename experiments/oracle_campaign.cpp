@@ -6,10 +6,18 @@
 // oracle section of results/robustness.md. Exit status 1 when any construction has a
 // wrong-but-usable result, a false no-curve answer or an unexpected exception.
 //
-//   exp_oracle_campaign --construction all --count 1000000 --seed 1 --threads 2
+//   exp_oracle_campaign --construction all --count 1000 --seed 1 --threads 2         (main job)
+//   exp_oracle_campaign --long --revision R --construction g1 --count 1000000      (long campaign)
+//
+// --long writes one file per construction, results/oracle_long_<construction>.{md,csv} (its row,
+// the code revision R the binary was built from, its findings; times in _timing), and then
+// results/robustness_oracle_long.md, the rows of every oracle_long_*.md present: a campaign of
+// 10^6 problems per construction takes hours for some, so it is run construction by construction
+// (scripts/oracle_long.sh) and each row says which code it checked.
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -49,6 +57,30 @@ void splice_section(const std::filesystem::path& file, const std::string& sectio
   std::ofstream(file) << text;
 }
 
+/// The table row of `name` in results/oracle_long_<name>.md (its line starting "| name |").
+std::string long_row(const std::filesystem::path& file, const std::string& name) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("| " + name + " |", 0) == 0) return line;
+  return {};
+}
+
+/// Rewrites <out>/robustness_oracle_long.md from the rows of every <out>/oracle_long_*.md.
+void write_long_summary(const std::filesystem::path& out, const std::string& header, const std::string& description) {
+  std::vector<std::string> rows;
+  for (const std::string& name : oracle::constructions()) {
+    const auto file = out / ("oracle_long_" + name + ".md");
+    if (std::filesystem::exists(file))
+      if (std::string row = long_row(file, name); !row.empty()) rows.push_back(row);
+  }
+  std::ofstream md(out / "robustness_oracle_long.md");
+  md << "# Robustness: long oracle campaign\n\n"
+     << "Written by `exp_oracle_campaign --long` (each row by the command in its own file, "
+        "oracle_long_<construction>.md, with its findings) — do not edit by hand; rerun the commands.\n\n"
+     << description << "\n\n" << header;
+  for (const auto& r : rows) md << r << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -73,7 +105,17 @@ int main(int argc, char** argv) {
   std::vector<std::string> counts;
   app.add_option("--counts", counts, "per-construction counts NAME=N (override --count for those named)");
   app.add_option("--findings-file", findings_file, "write every finding (construction, index, kind, input) to this file");
+  bool long_campaign = false;
+  std::string revision;
+  app.add_flag("--long", long_campaign,
+               "write results/oracle_long_<construction>.md per construction and the summary "
+               "results/robustness_oracle_long.md (instead of the main job's robustness_oracle.md)");
+  app.add_option("--revision", revision, "code revision the binary was built from, recorded in each --long row");
   CLI11_PARSE(app, argc, argv);
+  if (long_campaign && revision.empty()) {
+    std::cerr << "exp_oracle_campaign: --revision: needed with --long (the commit the binary was built from)\n";
+    return 2;
+  }
 
   std::vector<std::string> names;
   if (construction == "all") names = oracle::constructions();
@@ -87,6 +129,7 @@ int main(int argc, char** argv) {
   full.columns = t.columns;
   for (const char* c : {"seconds", "problems_per_second", "us_per_problem_per_thread"}) full.columns.emplace_back(c);
   std::string findings;
+  std::vector<std::pair<std::string, std::string>> findings_of;  // construction, its findings
   bool bad = false;
   for (const auto& name : names) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -125,6 +168,7 @@ int main(int argc, char** argv) {
       f += "\nno_solution with a verified curve at another winding in −2…2, outside the message's scope (first by index):" +
            examples(tally.other_winding_examples) + "\n";
     if (!f.empty()) findings += "\n#### " + name + "\n" + f;
+    findings_of.emplace_back(name, f);
   }
   std::cout << t.markdown();
   if (!write) return bad && fail_on_finding ? 1 : 0;
@@ -151,10 +195,36 @@ int main(int argc, char** argv) {
       "`curve_at_other_winding`: no_solution whose data have a verified curve at a winding in −2…2 outside the "
       "message's scope (information, not a failure). Both `wrong_but_usable` and `false_no_curve` must be 0.";
   doc.notes = findings.empty() ? "No finding." : "### Findings\n" + findings;
-  io::write_result_table_with_timing(out, "robustness_oracle", doc, full, {"construction"},
-                                     {"seconds", "problems_per_second", "us_per_problem_per_thread"},
-                                     "Wall time of the whole campaign per construction (solver and oracle), with the "
-                                     "threads given; µs per problem per thread = seconds × threads / problems.");
+  const std::vector<std::string> timing_columns{"seconds", "problems_per_second", "us_per_problem_per_thread"};
+  const std::string timing_description =
+      "Wall time of the whole campaign per construction (solver and oracle), with the threads given; µs per "
+      "problem per thread = seconds × threads / problems.";
+  if (long_campaign) {
+    io::Table header_table;
+    for (size_t i = 0; i < names.size(); ++i) {
+      io::Table one;
+      one.columns = full.columns;
+      one.columns.insert(one.columns.begin() + 1, {"revision", "seed", "first"});
+      auto row = full.rows[i];
+      row.insert(row.begin() + 1, {revision, std::to_string(seed), std::to_string(first)});
+      one.add_row(row);
+      io::ResultDoc d = doc;
+      d.title = "Robustness: long oracle campaign, " + names[i];
+      d.description += " `revision`: the commit the binary was built from; problems first … first + problems − 1 of the seed.";
+      d.notes = findings_of[i].second.empty() ? "No finding." : "### Findings\n" + findings_of[i].second;
+      io::write_result_table_with_timing(out, "oracle_long_" + names[i], d, one, {"construction"}, timing_columns,
+                                         timing_description);
+      if (header_table.columns.empty())
+        for (const auto& c : one.columns)
+          if (std::find(timing_columns.begin(), timing_columns.end(), c) == timing_columns.end())
+            header_table.columns.push_back(c);
+    }
+    const std::string table = header_table.markdown();  // header and separator lines only
+    write_long_summary(out, table, doc.description);
+    return bad && fail_on_finding ? 1 : 0;
+  }
+  io::write_result_table_with_timing(out, "robustness_oracle", doc, full, {"construction"}, timing_columns,
+                                     timing_description);
   std::string section = "## Oracle campaign\n\nWritten by `" + doc.command +
                         "` (the full table with its description: results/robustness_oracle.md; findings there).\n\n" +
                         t.markdown() + "\n";
