@@ -1,5 +1,5 @@
-// The `newton` method of solvers/nonlinear.hpp: damped Newton with a forward-difference Jacobian
-// and backtracking on ‖r‖. Hand-written because the residual is a black box that may be undefined
+// The `newton` method of solvers/nonlinear.hpp: damped Newton with the residual's Jacobian or a
+// forward-difference one, and backtracking on ‖r‖. Hand-written because the residual is a black box that may be undefined
 // at a trial point (an ODE integration with an event, a curve that is not representable), which
 // Eigen's unsupported HybridNonLinearSolver and Ceres' line search cannot be told.
 #include <Eigen/Dense>
@@ -21,9 +21,19 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
   const NewtonOptions& no = o.newton;
   const auto n = x0.size();
   NonlinearResult r;
-  auto eval = [&](const Vec& x, Vec& out) {
+  // With f_with_jacobian, every point but the differencing ones is evaluated with its Jacobian
+  // (known: whether the residual gave one there).
+  auto eval = [&](const Vec& x, Vec& out, Mat* jac = nullptr, bool* known = nullptr) {
     ++r.evaluations;
-    if (!residual.f(ConstVectorMap(x.data(), n), VectorMap(out.data(), n))) return Eval::undefined;
+    bool defined;
+    if (jac && residual.f_with_jacobian) {
+      defined = residual.f_with_jacobian(ConstVectorMap(x.data(), n), VectorMap(out.data(), n), jac->data(), *known);
+      *known = *known && defined && jac->allFinite();
+    } else {
+      if (known) *known = false;
+      defined = residual.f(ConstVectorMap(x.data(), n), VectorMap(out.data(), n));
+    }
+    if (!defined) return Eval::undefined;
     return out.allFinite() ? Eval::defined : Eval::non_finite;
   };
   auto too_far = [&](const Vec& trial, const Vec& x) {
@@ -34,8 +44,10 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
   };
   Vec x = x0;
   Vec fx(n);
+  Mat jac(n, n), jac_trial(n, n);
+  bool jac_known = false, trial_known = false;
   r.x = x0;
-  if (const Eval e = eval(x, fx); e != Eval::defined) {
+  if (const Eval e = eval(x, fx, &jac, &jac_known); e != Eval::defined) {
     r.status = e == Eval::undefined ? Status::not_converged : Status::numerical_failure;
     r.message = e == Eval::undefined ? "newton: residual undefined at the starting point"
                                      : "newton: residual not finite at the starting point";
@@ -51,13 +63,12 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     return r;
   };
   Vec xp(n), fp(n), xn(n), fn(n);
-  Mat jac(n, n);
   while (true) {
     if (norm <= o.residual_tolerance) return finish(Status::ok, "");
     if (r.iterations >= no.max_iterations || r.evaluations >= no.max_evaluations)
       return finish(Status::max_iterations, "newton: cap reached after " + std::to_string(r.iterations) + " iterations");
     ++r.iterations;
-    for (Eigen::Index j = 0; j < n; ++j) {
+    for (Eigen::Index j = 0; j < n && !jac_known; ++j) {
       double h = no.fd_step * std::max(1.0, std::abs(x[j]));
       xp = x;
       xp[j] += h;
@@ -81,11 +92,13 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     for (int k = 0; k <= no.max_halvings; ++k, t *= 0.5) {
       xn = x + t * dx;
       if (too_far(xn, x)) continue;
-      if (eval(xn, fn) != Eval::defined) continue;
+      if (eval(xn, fn, &jac_trial, &trial_known) != Eval::defined) continue;
       const double trial_norm = residual_norm(fn, o.norm);
       if (trial_norm < norm) {
         x = xn;
         fx = fn;
+        jac_known = trial_known;
+        if (jac_known) jac = jac_trial;
         norm = trial_norm;
         accepted = true;
         break;

@@ -16,7 +16,7 @@ constexpr std::array<std::string_view, 1> kCeresAliases = {"levenberg-marquardt"
 constexpr std::array<std::string_view, 1> kSimplexAliases = {"nelder-mead"};
 constexpr std::array<NonlinearMethodInfo, 3> kNonlinearMethods = {{
     {NonlinearMethod::newton, "newton", {},
-     "damped Newton (M = N): forward-difference Jacobian, full-pivot LU, step halving until |r| decreases",
+     "damped Newton (M = N): the residual's Jacobian where given, else forward differences; full-pivot LU, step halving until |r| decreases",
      "residual_tolerance, norm, newton.{max_iterations, max_evaluations, fd_step, backward_differences, "
      "reject_singular, max_step, max_trial_change, max_halvings, step_tolerance, stall_factor}"},
     {NonlinearMethod::ceres, "ceres", kCeresAliases,

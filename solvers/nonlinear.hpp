@@ -1,8 +1,8 @@
 #pragma once
 // Nonlinear systems r(x) = 0 with N unknowns and M residuals, one registry
 // (nonlinear_methods(): name, aliases, description, options), selectable by name:
-//   newton   damped Newton (M = N): forward-difference Jacobian, full-pivot LU, backtracking by
-//            halving until ‖r‖ decreases;
+//   newton   damped Newton (M = N): the residual's own Jacobian where it gives one, else forward
+//            differences; full-pivot LU, backtracking by halving until ‖r‖ decreases;
 //   ceres    Ceres Solver Levenberg–Marquardt on min ½‖r‖₂², central-difference Jacobian;
 //   simplex  modified downhill simplex (Nelder–Mead) as 000 §2.2 uses it, minimizing a merit:
 //            ‖r‖ by default, or the caller's (e.g. an angle) in SimplexOptions::merit.
@@ -43,6 +43,10 @@ using VectorMap = Eigen::Map<Eigen::VectorXd>;
 struct NonlinearResidual {
   int size = 0;  ///< M ≥ 1
   std::function<bool(ConstVectorMap x, VectorMap r)> f;
+  /// Optional, used by newton: r as `f` gives it and, where `jacobian_known` is set true, the M×N
+  /// Jacobian at x (column-major in `jacobian`). Newton then calls it instead of `f` and differences
+  /// only at points where the Jacobian was not given.
+  std::function<bool(ConstVectorMap x, VectorMap r, double* jacobian, bool& jacobian_known)> f_with_jacobian;
 };
 
 /// The norm of r for the tolerance test, Newton's descent test and the simplex's default merit.

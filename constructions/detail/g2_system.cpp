@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <climits>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 
@@ -17,6 +18,11 @@ namespace {
 double q_of_z(const G2System& p, double z) {
   if (!(p.law.alpha > 0)) return z;
   return p.law.offset ? z * LaLaw::expm1_ratio(-p.law.alpha * z) : p.law.sigma * std::exp(-p.law.alpha * z);
+}
+/// dq/dz at q = q_of_z(z).
+double dq_of_z(const G2System& p, double q) {
+  if (!(p.law.alpha > 0)) return 1.0;
+  return p.law.offset ? 1.0 - p.law.alpha * q : -p.law.alpha * q;
 }
 double z_of_q(const G2System& p, double q) {
   if (!(p.law.alpha > 0)) return q;
@@ -49,6 +55,41 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
   std::complex<double> sum{};
   for (const auto& s : seg) sum += p.integrate(p.law, s, evaluations);
   return {seg[2].phi_b(p.law) - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
+}
+
+G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations) {
+  const auto seg = g2_segments(p, h, q1, q2);
+  std::array<std::complex<double>, 3> I;
+  std::complex<double> sum{};
+  for (int k = 0; k < 3; ++k) sum += I[k] = p.integrate(p.law, seg[k], evaluations);
+  G2Linearization out;
+  const double phi_end = seg[2].phi_b(p.law);
+  out.r = {phi_end - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
+  std::array<LaSegmentDerivatives, 3> d;
+  for (int k = 0; k < 3; ++k) {
+    const auto dk = segment_derivatives(p.law, seg[k], I[k]);
+    if (!dk) return out;
+    d[k] = *dk;
+  }
+  // The end values q0 = Q(κs·h), q3 = Q(κe·h) move with log h: t ∝ h^(−α) (t the plain q), so
+  // dq/dlog h = −αq in the plain form, 1 − αq in the log forms (dq/dt = −σ/α there).
+  const auto dq_dlogh = [&](double q) { return p.law.log_form() ? 1.0 - p.law.alpha * q : -p.law.alpha * q; };
+  const std::array<std::array<double, 4>, 3> dq{{{dq_dlogh(seg[0].qa), 0, 0, dq_dlogh(seg[2].qb)}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+  const std::complex<double> i(0, 1);
+  for (int j = 0; j < 3; ++j) {
+    double dphi = 0;  // d φa of the segment
+    std::complex<double> dsum{};
+    for (int k = 0; k < 3; ++k) {
+      dsum += i * I[k] * dphi + d[k].dI_dqa * dq[j][k] + d[k].dI_dqb * dq[j][k + 1];
+      dphi += d[k].dphib_dqa * dq[j][k] + d[k].dphib_dqb * dq[j][k + 1];
+    }
+    if (j == 0) dsum += sum;  // ∂(h·Σ)/∂log h = h(Σ + ∂Σ/∂log h)
+    out.jacobian[0][j] = dphi;
+    out.jacobian[1][j] = h * dsum.imag();
+    out.jacobian[2][j] = h * dsum.real();
+  }
+  out.jacobian_known = true;
+  return out;
 }
 
 double g2_joint_q(const G2System& p, double kappa_tilde, double h) {
@@ -126,7 +167,7 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     const auto [h, q1, q2] = g2_ten_unknown_solution(p, r.x);
     out.h = h, out.q1 = q1, out.q2 = q2;
   } else {
-    // Newton: forward differences, no step cap, the length changing by at most e^2 per trial, 30
+    // Newton: the closed-form Jacobian (forward differences where a segment has none), no step cap, the length changing by at most e^2 per trial, 30
     // trial steps 1 … 2^-29; a stall within 1e3·tolerance counts as converged.
     no.newton.max_iterations = o.max_iterations;
     no.newton.max_evaluations = LONG_MAX;
@@ -141,12 +182,23 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     no.newton.stall_factor = 1e3;
     no.simplex.max_iterations = 100 * o.max_iterations;
     no.simplex.max_evaluations = 200L * o.max_iterations;
-    const NonlinearResidual residual{3, [&](ConstVectorMap z, VectorMap out_r) {
-                                       const auto v = g2_residuals(p, std::exp(z[0]), q_of_z(p, z[1]), q_of_z(p, z[2]),
-                                                                   out.evaluations);
-                                       out_r << v[0], v[1], v[2];
-                                       return true;
-                                     }};
+    NonlinearResidual residual{3, [&](ConstVectorMap z, VectorMap out_r) {
+                                 const auto v = g2_residuals(p, std::exp(z[0]), q_of_z(p, z[1]), q_of_z(p, z[2]),
+                                                             out.evaluations);
+                                 out_r << v[0], v[1], v[2];
+                                 return true;
+                               }};
+    // Newton's Jacobian in closed form (g2_linearize), chained from q to z.
+    if (!std::getenv("LAC_NO_JAC")) residual.f_with_jacobian = [&](ConstVectorMap z, VectorMap out_r, double* jac, bool& known) {
+      const double q1 = q_of_z(p, z[1]), q2 = q_of_z(p, z[2]);
+      const G2Linearization v = g2_linearize(p, std::exp(z[0]), q1, q2, out.evaluations);
+      out_r << v.r[0], v.r[1], v.r[2];
+      known = v.jacobian_known;
+      const std::array<double, 3> dq_dz{1.0, dq_of_z(p, q1), dq_of_z(p, q2)};
+      for (int c = 0; c < 3; ++c)
+        for (int row = 0; row < 3; ++row) jac[3 * c + row] = v.jacobian[row][c] * dq_dz[c];
+      return true;
+    };
     const Eigen::Vector3d z0(std::log(s.h), z_of_q(p, g2_joint_q(p, s.k1, s.h)), z_of_q(p, g2_joint_q(p, s.k2, s.h)));
     if (!z0.allFinite()) return unusable_start();
     r = solve_nonlinear(method, residual, z0, no);

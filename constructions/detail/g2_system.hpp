@@ -55,6 +55,17 @@ std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, doubl
 /// when the segments are not representable or the integrator fails.
 std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, double q2, long& evaluations);
 
+/// g2_residuals with their Jacobian with respect to (log h, q1, q2), from each segment's
+/// closed-form derivatives (segment_derivatives of curves/planar/la_segment_kernel.hpp) carried
+/// along the chain of tangent angles; `jacobian_known` false where a segment has none (Newton then
+/// differences).
+struct G2Linearization {
+  std::array<double, 3> r{};
+  std::array<std::array<double, 3>, 3> jacobian{};  ///< [residual][unknown]
+  bool jacobian_known = false;
+};
+G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations);
+
 /// q of a joint curvature estimate, forced onto the sign the law allows (α ≥ 0: sign σ, ≠ 0).
 double g2_joint_q(const G2System& p, double kappa_tilde, double h);
 

@@ -663,6 +663,41 @@ std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail
   return LaSegmentIntegral{h * v.I, kLaKernelError * h + extra};
 }
 
+std::optional<LaSegmentDerivatives> segment_derivatives(const LaLaw& law, const detail::LinearQ& seg,
+                                                        std::complex<double> I) {
+  const double L = seg.ub - seg.ua, d = seg.qb - seg.qa, alpha = law.alpha;
+  if (!(L > 0) || !std::isfinite(L) || !std::isfinite(I.real()) || !std::isfinite(I.imag())) return std::nullopt;
+  const double scale = law.log_form() ? 1.0 : std::max(std::abs(seg.qa), std::abs(seg.qb));
+  if (!(std::abs(d) >= kLaDerivativeMinChange * scale) || !std::isfinite(scale)) return std::nullopt;
+  const double p = alpha == 0 ? 0.0 : 1.0 - 1.0 / alpha;
+  if (!law.log_form() && std::abs(p) < 0.1) return std::nullopt;
+  const Complex i(0, 1);
+  const double m = d / L, phib = seg.phi_b(law), ka = law.kappa_of_q(seg.qa), kb = law.kappa_of_q(seg.qb);
+  const Complex ea = std::polar(1.0, seg.phi_a), eb = std::polar(1.0, phib);
+  // J = ∫(φ − φa)e^{iφ}du. With t the plain q and c = dq/dt (1; −σ/α in the offset form),
+  // φ − φa = c(tκ − taκa)/(p·m) and ∫tκe^{iφ} = −i([te^{iφ}] − (m/c)I); at α = 0 (t = σ, c = ∞)
+  // φ − φa = (κ − κa)/m.
+  Complex J;
+  if (alpha == 0) {
+    J = (-i * (eb - ea) - ka * I) / m;
+  } else {
+    const double ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);
+    const double c_over_p = law.log_form() ? law.sigma / (1.0 - alpha) : 1.0 / p;
+    const double m_over_c = law.log_form() ? -law.sigma * alpha * m : m;
+    J = c_over_p / m * (-i * (tb * eb - ta * ea) + i * m_over_c * I - ta * ka * I);
+  }
+  // ∂φ/∂qa = (κ(1 − v) − κa)/m + (φ − φa)/d, ∂φ/∂qb = κv/m − (φ − φa)/d (v = (u − ua)/L), and
+  // ∫κ(1 − v)e^{iφ} = i·ea − iI/L, ∫κv·e^{iφ} = −i·eb + iI/L.
+  LaSegmentDerivatives out;
+  out.dI_dqa = i * ((i * ea - i * I / L - ka * I) / m + J / d);
+  out.dI_dqb = i * ((-i * eb + i * I / L) / m - J / d);
+  out.dphib_dqa = (phib - seg.phi_a - ka * L) / d;
+  out.dphib_dqb = (kb * L - (phib - seg.phi_a)) / d;
+  const bool finite = std::isfinite(std::abs(out.dI_dqa)) && std::isfinite(std::abs(out.dI_dqb)) &&
+                      std::isfinite(out.dphib_dqa) && std::isfinite(out.dphib_dqb);
+  if (!finite) return std::nullopt;
+  return out;
+}
 
 // v = t^k with kp ≥ 4 makes the integrand k t^(k−1) e^{iΔ t^(kp)} smooth.
 std::optional<std::complex<double>> power_limit_integral(double delta, double p, long& evaluations) {

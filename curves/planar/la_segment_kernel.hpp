@@ -72,6 +72,27 @@ struct LaSegmentIntegral {
 /// piece past its caps, data out of the double range): use a quadrature method there.
 std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail::LinearQ& seg, long& evaluations);
 
+/// Derivatives of a segment's I = ∫_{ua}^{ub} e^{iφ(u)} du and end angle φb with respect to its end
+/// values qa, qb (the tangent angle enters as ∂I/∂φa = iI, ∂φb/∂φa = 1): the Jacobian of a
+/// construction's end conditions.
+struct LaSegmentDerivatives {
+  std::complex<double> dI_dqa, dI_dqb;
+  double dphib_dqa = 0, dphib_dqb = 0;
+};
+
+/// Relative change |qb − qa| (of |q| in the plain form, absolute in the log forms, where q holds
+/// log|κ|) below which segment_derivatives declines: its closed form divides by qb − qa.
+inline constexpr double kLaDerivativeMinChange = 1e-4;
+
+/// Those derivatives in closed form from I itself (by whatever method I was computed), no further
+/// integral: ∂φ/∂qa and ∂φ/∂qb along the segment are combinations of 1, κ, uκ and φ − φa; the
+/// integrals of κe^{iφ} and uκe^{iφ} follow by parts, and ∫(φ − φa)e^{iφ}du does too because F(q)
+/// is t·K(q)/p times dq/dt (la_law.hpp, p = 1 − 1/α; at α = 0, φ − φa = (κ − κa)/slope)
+/// (docs/g2_hermite.md "Jacobian"). nullopt where that form cancels: |qb − qa| below
+/// kLaDerivativeMinChange, |p| < 0.1 in the plain form (α near 1, F = log|q|), non-finite data.
+std::optional<LaSegmentDerivatives> segment_derivatives(const LaLaw& law, const detail::LinearQ& seg,
+                                                        std::complex<double> integral);
+
 /// ∫₀¹ e^{iΔv^p} dv for 0 < p < 1: the limit shape of α > 1 as the shape variable goes to ±∞
 /// (docs/g1_hermite.md "Proofs of no solution"); adds its kernel evaluations to `evaluations`.
 /// nullopt where |Δ| is past the kernel's panel cap (not evaluated).

@@ -150,3 +150,43 @@ TEST(LaSegmentKernel, RoundingTermOfTheBoundFollowsTheTurning) {
 }
 
 }  // namespace
+
+// segment_derivatives (closed form from I) against central differences of the tanh-sinh reference
+// integral: every α regime (plain, offset, α = 0, the clothoid), with and without an inflection.
+TEST(LaSegmentKernel, DerivativesMatchDifferencesOfTheReferenceIntegral) {
+  struct Case {
+    LaLaw law;
+    double kappa_a, kappa_b;
+  };
+  const std::vector<Case> cases{
+      {{-1.0, 1.0}, -1.0, 2.0},  {{-1.0, 1.0}, 0.5, 1.5},   {{-3.0, 1.0}, -0.8, 1.7},  {{-0.5, 1.0}, 0.4, 2.5},
+      {{-0.5, 1.0}, -2.0, 1.0},  {{-0.02, 1.0, true}, 0.5, 3.0}, {{0.0, 1.0}, 0.5, 3.0}, {{0.0, -1.0}, -2.0, -0.3},
+      {{0.02, 1.0, true}, 0.6, 2.0}, {{0.5, 1.0}, 0.5, 3.0}, {{2.0, 1.0}, 2.5, 0.3},   {{3.0, -1.0}, -0.7, -2.0}};
+  for (const Case& c : cases) {
+    detail::LinearQ seg{0.1, 0.8, c.law.q_of_kappa(c.kappa_a), c.law.q_of_kappa(c.kappa_b), 0.3};
+    const auto d = segment_derivatives(c.law, seg, detail::integrate_tangent_reference(c.law, seg));
+    SCOPED_TRACE("alpha " + std::to_string(c.law.alpha) + " kappa " + std::to_string(c.kappa_a) + " " +
+                 std::to_string(c.kappa_b));
+    ASSERT_TRUE(d.has_value());
+    for (int end = 0; end < 2; ++end) {
+      const double q = end == 0 ? seg.qa : seg.qb;
+      const double h = 1e-5 * (c.law.log_form() ? 1.0 : std::abs(q));
+      auto moved = [&](double dq) {
+        detail::LinearQ s = seg;
+        (end == 0 ? s.qa : s.qb) += dq;
+        return std::pair{detail::integrate_tangent_reference(c.law, s), s.phi_b(c.law)};
+      };
+      const auto [ip, pp] = moved(h);
+      const auto [im, pm] = moved(-h);
+      const std::complex<double> dI = (ip - im) / (2 * h);
+      const double dphi = (pp - pm) / (2 * h);
+      const std::complex<double> got = end == 0 ? d->dI_dqa : d->dI_dqb;
+      const double got_phi = end == 0 ? d->dphib_dqa : d->dphib_dqb;
+      EXPECT_LT(std::abs(got - dI), 1e-8 * (1 + std::abs(dI))) << "end " << end << ": " << got << " vs " << dI;
+      EXPECT_LT(std::abs(got_phi - dphi), 1e-8 * (1 + std::abs(dphi))) << "end " << end;
+    }
+  }
+  // Declined where the closed form cancels: an arc, and the plain form near α = 1.
+  EXPECT_FALSE(segment_derivatives({-0.5, 1.0}, {0, 1, 1.0, 1.0 + 1e-9, 0}, {1, 0}).has_value());
+  EXPECT_FALSE(segment_derivatives({1.0, 1.0}, {0, 1, 1.0, 2.0, 0}, {0.5, 0.5}).has_value());
+}
