@@ -367,6 +367,8 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     std::string m = scope + " found, but the search is not complete: " + turning_text(failures.front().first) + ": " +
                     failures.front().second;
     if (failures.size() > 1) m += " (and " + std::to_string(failures.size() - 1) + " more turnings unresolved)";
+    if (failed_status == Status::max_iterations && failures.size() > 1)  // the budget stopped a later turning
+      m += "; stopped at " + turning_text(failures.back().first) + ": " + failures.back().second;
     return finish(failed_status, m);
   }
   if (o.winding) return finish(Status::no_solution, scope + ": " + proofs.front().second);

@@ -50,7 +50,8 @@ long piecewise_polyline_budget(const M& m, long n) {
 template <class V>
 void add_part(IntegralResult<V>& total, const IntegralResult<V>& part, double sign = 1.0) {
   total.value += sign * part.value;
-  total.error_estimate += part.error_estimate;
+  // The part's estimate and the rounding of this addition (ε of the partial sum).
+  total.error_estimate += part.error_estimate + std::numeric_limits<double>::epsilon() * std::abs(total.value);
   total.evaluations += part.evaluations;
   if (part.status != Status::ok && total.status == Status::ok) {
     total.status = part.status;

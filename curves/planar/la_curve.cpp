@@ -87,6 +87,26 @@ double LaCurve::s_at_log_rho(double log_rho) const {
   return s;
 }
 
+double LaCurve::one_plus_c_lambda_t(Parameter p, double t) const {
+  const auto two_sum = [](double a, double b, double& err) {
+    const double s = a + b, bb = s - a;
+    err = (a - (s - bb)) + (b - bb);
+    return s;
+  };
+  const double pr = lambda_ * t, pr_err = std::fma(lambda_, t, -pr);  // Λt = pr + pr_err exactly
+  const double q = alpha_ * pr;
+  double q_err = std::fma(alpha_, pr, -q) + alpha_ * pr_err;  // αΛt = q + q_err to ~ε²
+  double r = q;
+  if (p == Parameter::theta) {  // (α − 1)Λt = αΛt − Λt
+    double e = 0;
+    r = two_sum(q, -pr, e);
+    q_err += e - pr_err;
+  }
+  double e = 0;
+  const double one_plus_r = two_sum(1.0, r, e);
+  return one_plus_r + (e + q_err);
+}
+
 CurvePoint LaCurve::frame_at(Parameter p, double t) const {
   check(p, t, p == Parameter::theta ? "theta" : "s");
   return frame_inside(p, t);

@@ -8,6 +8,7 @@
 // which makes α = 0, α = 1 and Λ → 0 exact limits instead of special cases:
 //   log ρ(s) = Λ s g(αΛs),          θ(s) = s g(αΛs) h((α−1) log ρ)
 //   log ρ(θ) = Λ θ g((α−1)Λθ),     s(θ) = θ g((α−1)Λθ) h(α log ρ)
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -58,12 +59,12 @@ class LaCurve {
   /// models (t must be inside the domain; the result may be non-finite where it is not
   /// representable).
   double log_rho_at_theta_unchecked(double theta) const {
-    const double x = lambda_ * theta;
-    return x * log1p_ratio((alpha_ - 1.0) * x);
+    double g = 0;
+    return log_rho_and_g(Parameter::theta, theta, g);
   }
   double log_rho_at_s_unchecked(double s) const {
-    const double x = lambda_ * s;
-    return x * log1p_ratio(alpha_ * x);
+    double g = 0;
+    return log_rho_and_g(Parameter::s, s, g);
   }
   double theta_at_s_unchecked(double s) const {
     double theta = 0;
@@ -107,14 +108,20 @@ class LaCurve {
   // frame_inside in two stages: log ρ and g (one log1p), then the other parameter, ρ and κ
   // (one expm1, one exp) with the representability check.
   double log_rho_and_g(Parameter p, double t, double& g) const {
-    const double x = lambda_ * t;
-    g = log1p_ratio((p == Parameter::theta ? alpha_ - 1.0 : alpha_) * x);
+    const double x = lambda_ * t, z = (p == Parameter::theta ? alpha_ - 1.0 : alpha_) * x;
+    // Toward the end of the domain (z → −1) 1 + z cancels: 1 + cΛt there from exact products (0
+    // where a t the domain check let through, e.g. θ_max rounded up, lies beyond the exact end).
+    g = z < -0.5 ? std::log(std::max(0.0, one_plus_c_lambda_t(p, t))) / z : log1p_ratio(z);
     return x * g;
   }
+  /// 1 + cΛt (c = α, or α − 1 at θ) with the products and sums error-free (fma, two-sum): ~ε
+  /// relative however close cΛt is to −1 (where the rounded 1 + z keeps none of its digits).
+  double one_plus_c_lambda_t(Parameter p, double t) const;
   void finish_frame(Parameter p, double g, double log_rho, CurvePoint& c) const {
     const bool at_theta = p == Parameter::theta;
     const double t = at_theta ? c.theta : c.s;
-    (at_theta ? c.s : c.theta) = t * (g * expm1_ratio((at_theta ? alpha_ : alpha_ - 1.0) * log_rho));
+    (at_theta ? c.s : c.theta) =
+        inside(at_theta ? s_domain_ : theta_domain_, t * (g * expm1_ratio((at_theta ? alpha_ : alpha_ - 1.0) * log_rho)));
     c.rho = std::exp(log_rho);
     // 1/ρ carries ρ's rounding plus one; below DBL_MIN ρ is subnormal (few bits), so take e^(−log ρ).
     c.kappa = c.rho >= std::numeric_limits<double>::min() ? 1.0 / c.rho : std::exp(-log_rho);
@@ -132,8 +139,16 @@ class LaCurve {
   double log_rho_and_other(Parameter p, double t, double& other) const {
     double g = 0;
     const double log_rho = log_rho_and_g(p, t, g);
-    other = t * (g * expm1_ratio((p == Parameter::theta ? alpha_ : alpha_ - 1.0) * log_rho));
+    other = inside(p == Parameter::theta ? s_domain_ : theta_domain_,
+                   t * (g * expm1_ratio((p == Parameter::theta ? alpha_ : alpha_ - 1.0) * log_rho)));
     return log_rho;
+  }
+  /// v, or the nearest double inside an open end of d that v reaches by rounding (θ of an s next
+  /// to the end of the s domain rounds onto θ_max, which is outside the θ domain).
+  static double inside(const Interval& d, double v) {
+    if (!d.hi_closed && v >= d.hi && std::isfinite(d.hi)) return std::nextafter(d.hi, -HUGE_VAL);
+    if (!d.lo_closed && v <= d.lo && std::isfinite(d.lo)) return std::nextafter(d.lo, HUGE_VAL);
+    return v;
   }
   [[noreturn]] void throw_unrepresentable(Parameter p, double t, double log_rho) const;
 

@@ -127,6 +127,16 @@ std::vector<double> part_ends(const LaLaw& law, const LinearQ& seg, const Tangen
     std::vector<double> ends{p.t0};
     for (int k = 1; k < n; ++k) ends.push_back(std::pow(b0 + (1.0 - b0) * k / n, 1.0 / p.beta));
     ends.push_back(1.0);
+    // The layer at t = 1 (detail::layer_cuts, in t: t^β = e^{-d}) where β is large (small |α|).
+    if (p.beta * (1.0 - p.t0) > 32) {
+      for (double d = 0.25; d < 700.0; d *= 2) {
+        const double t = std::exp(-d / p.beta);
+        if (!(t > p.t0)) break;
+        ends.push_back(t);
+      }
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    }
     return ends;
   }
   // Plain: φ(u) − φa = (F(q(u)) − F(qa))/c0, so equal steps of φ are equal steps of F(q) while q
@@ -150,14 +160,33 @@ std::vector<double> part_ends(const LaLaw& law, const LinearQ& seg, const Tangen
     ends.push_back(std::isfinite(u) && u > ends.back() && u < seg.ub ? u : std::max(uniform, ends.back()));
   }
   ends.push_back(seg.ub);
+  if (!crosses) {
+    const std::vector<double> layer = layer_cuts(law, seg, seg.ua, seg.ub);
+    if (!layer.empty()) {
+      ends.insert(ends.end(), layer.begin(), layer.end());
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    }
+  }
   return ends;
+}
+
+double phase_noise(const LaLaw& law, const LinearQ& seg) {
+  const double c0 = seg.slope(), ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);
+  const bool crosses = law.alpha != 0 && ((ta < 0 && tb > 0) || (ta > 0 && tb < 0));
+  // φ's total variation: through a zero of t (F(0) = 0) the two sides' |F|/|c0|.
+  const double variation = crosses ? (std::abs(law.F(seg.qa)) + std::abs(law.F(seg.qb))) / std::abs(c0)
+                                   : std::abs(seg.turning(law));
+  const double per_radian = law.log_form() ? 2 * DBL_EPSILON * (1 + std::max(std::abs(seg.qa), std::abs(seg.qb)))
+                                           : 2 * DBL_EPSILON / std::abs(law.alpha);
+  return per_radian * variation;
 }
 
 double tangent_rounding(const LaLaw& law, const LinearQ& seg) {
   double phi_max = std::max(std::abs(seg.phi_a), std::abs(seg.phi_b(law)));
   const TangentPlan plan = tangent_plan(law, seg);
   if (plan.pieces[0].graded) phi_max = std::max(phi_max, std::abs(plan.pieces[0].phi_zero));  // φ at the inflection
-  return DBL_EPSILON * (1.0 + phi_max) * (seg.ub - seg.ua);
+  return (DBL_EPSILON * (1.0 + phi_max) + phase_noise(law, seg)) * (seg.ub - seg.ua);
 }
 
 void place_tangent_integral(const LaSegment& seg, const IntegralResult<std::complex<double>>& I, PositionResult& r) {

@@ -50,6 +50,11 @@ def reference(case, u):
         return phi_a + (F(alpha, sigma, q(v)) - Fa) / c
 
     cuts = [ua + (u - ua) * k / 64 for k in range(65)]
+    if alpha != 0 and abs(alpha) < 1e-3:
+        # Steep F (|p| = |1 - 1/alpha| large): the turning sits in layers ~1/|p| of |q| wide at the
+        # ends of largest |q|; geometric cuts toward both ends.
+        cuts = sorted(set(cuts + [ua + (u - ua) * mp.mpf(2) ** -k for k in range(7, 40)] +
+                          [u - (u - ua) * mp.mpf(2) ** -k for k in range(7, 40)]))
     if alpha < 0 and qa * qb < 0:
         zero = ua - qa / c
         if ua < zero < u:
@@ -95,6 +100,11 @@ CASES += [
     (2.0, 1.0, 0.0, 1.0, -3.0, -0.0625, 1.0, 0.0, 0.0, 1.0, 0.25),
     (3.0, 1.0, 0.0, 1.0, 1.5, 0.25, 0.0, 0.0, 0.0, 1.0, 0.0),
     (3.0, 1.0, 0.0, 2.0, -1.0, -4.0, -0.25, 1.0, 2.0, 0.5, -0.5),
+    # Small |alpha| through an inflection: |q| changes by 2e-4 (3e-5) of itself on the side of
+    # each end, and the whole turning of ~0.7 rad (~1 rad) happens within ~1e-4 (~1e-6) of the ends.
+    (-2.0540882710784719e-05, 1.0, 0.0, 1.0, 1.0002290459227217, -1.0002290459227217, -0.71403470027125093,
+     0.0, 0.0, 1.0, 0.0),
+    (-2.4592826297817304e-06, 1.0, 0.0, 1.0, 1.0000333786010742, -1.0000337362289429, 0.5, 0.0, 0.0, 1.0, 0.0),
 ]
 
 FRACTIONS = (0.1376953125, 0.5, 0.8125, 1.0)
@@ -112,6 +122,8 @@ def main():
             us.append(float(ua - qa / ((qb - qa) / (ub - ua))))  # at the inflection (as a double)
         for u in us:
             s, z, theta, kappa = reference(case, mp.mpf(u))
+            # A curvature below the double range (small |alpha|: K = |q|^(-1/alpha)) is written as 0.
+            kappa = mp.mpf(0) if abs(kappa) < mp.mpf(10) ** -300 else kappa
             cells = [str(i)] + [repr(v) for v in case] + [repr(u)] + [mp.nstr(v, 25) for v in (s, z.real, z.imag, theta, kappa)]
             print(",".join(cells))
 

@@ -3,6 +3,7 @@
 // (la_segment.hpp includes this file at its end; included alone, it includes la_segment.hpp first.)
 #include "lac/curves/planar/la_segment.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <concepts>
 #include <limits>
@@ -27,8 +28,13 @@ inline constexpr double kMaxParts = 1e6;
 /// of φ through F⁻¹, or of t^β). Empty beyond kMaxParts parts.
 std::vector<double> part_ends(const LaLaw& law, const LinearQ& seg, const TangentPiece& piece);
 
-/// ε(1 + max|φ|)|ub − ua|: the error of the integrand values themselves (φ rounded), which no
-/// quadrature estimate sees.
+/// Bound on |δφ| from the rounding of q (relative ε in the plain form: ε/|α| on κ; absolute
+/// ε(1 + |q|) on log|κ| in the log forms) over φ's total variation on the segment: at small |α| it
+/// dwarfs ε·|φ| (at α = −2e-6, 2e-10 rad per radian turned).
+double phase_noise(const LaLaw& law, const LinearQ& seg);
+
+/// (ε(1 + max|φ|) + phase_noise)·|ub − ua|: the error of the integrand values themselves (φ
+/// rounded), which no quadrature estimate sees.
 double tangent_rounding(const LaLaw& law, const LinearQ& seg);
 
 /// The GaussLegendre path: detail::integrate_tangent with the 10-point estimate and the status
@@ -48,6 +54,10 @@ IntegralResult<std::complex<double>> integrate_tangent_with(const LaLaw& law, co
   IntegralResult<std::complex<double>> r;
   const TangentPlan plan = tangent_plan(law, seg);
   const long budget = tangent_budget(m);
+  // No relative tolerance below the integrand's own noise (an adaptive rule would bisect to its
+  // budget chasing it); tangent_rounding adds the noise to the estimate.
+  M method = m;
+  if constexpr (requires { method.tol; }) method.tol = std::max(m.tol, 2 * phase_noise(law, seg));
   const double Ka = law.kappa_of_q(seg.qa), Fa = law.F(seg.qa);
   const auto plain = [&](double u) {
     return std::polar(1.0, seg.phi_a + (u - seg.ua) * law.divided(seg.qa, Ka, Fa, seg.q_at(u)));
@@ -70,7 +80,8 @@ IntegralResult<std::complex<double>> integrate_tangent_with(const LaLaw& law, co
                     " evaluations (parts of " + format_number(kMaxTurningPerPart) + " rad); raise the method's budget";
         return r;
       }
-      add_part(r, p.graded ? m.integrate(graded, ends[k], ends[k + 1]) : m.integrate(plain, ends[k], ends[k + 1]), p.sign);
+      add_part(r, p.graded ? method.integrate(graded, ends[k], ends[k + 1]) : method.integrate(plain, ends[k], ends[k + 1]),
+               p.sign);
     }
   }
   return r;

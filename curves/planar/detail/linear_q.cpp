@@ -129,6 +129,27 @@ std::vector<double> steep_cuts(const LaLaw& law, const LinearQ& seg) {
 
 }  // namespace
 
+std::vector<double> layer_cuts(const LaLaw& law, const LinearQ& seg, double u0, double u1) {
+  std::vector<double> cuts;
+  const double c0 = seg.slope();
+  if (law.alpha == 1 || !(c0 != 0 && std::isfinite(c0)) || !(u1 > u0)) return cuts;
+  const double q0 = seg.q_at(u0), q1 = seg.q_at(u1), F0 = law.F(q0), F1 = law.F(q1);
+  const double t0 = law.t_of_q(q0), t1 = law.t_of_q(q1);
+  if ((t0 < 0 && t1 > 0) || (t0 > 0 && t1 < 0)) return cuts;  // not one-signed
+  const double big = std::max(std::abs(F0), std::abs(F1)), small = std::min(std::abs(F0), std::abs(F1));
+  const double range = std::log(big / small);  // inf where F = 0 at an end (the inflection, α < 0)
+  const bool thin = law.log_form() || std::abs(1.0 - 1.0 / law.alpha) > 8;  // layer ~1/|p| of log|t|
+  if (!thin || !(range > 8) || !std::isfinite(big) || big == 0) return cuts;
+  const bool at_0 = std::abs(F0) > std::abs(F1);
+  const double F_end = at_0 ? F0 : F1, side = t0 != 0 ? t0 : t1;
+  for (double d = 0.25; d < std::min(range, 700.0); d *= 2) {
+    const double u = u0 + (law.F_inverse(F_end * std::exp(-d), side) - q0) / c0;
+    if (std::isfinite(u) && u > u0 && u < u1) cuts.push_back(u);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  return cuts;
+}
+
 TangentPlan tangent_plan(const LaLaw& law, const LinearQ& seg) {
   TangentPlan plan;
   plan.pieces[0].u0 = seg.ua;
@@ -206,6 +227,13 @@ std::complex<double> integrate_tangent_reference(const LaLaw& law, const LinearQ
     if (cut - seg.ua > margin && seg.ub - cut > margin) cuts.push_back(cut);
   }
   cuts.push_back(seg.ub);
+  // Boundary layers of small |α| on each one-signed side (tanh-sinh's estimate misses them).
+  for (size_t k = 0, n = cuts.size(); k + 1 < n; ++k) {
+    const std::vector<double> layer = layer_cuts(law, seg, cuts[k], cuts[k + 1]);
+    cuts.insert(cuts.end(), layer.begin(), layer.end());
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   std::complex<double> sum{};
   // One complex-valued integral per piece (Boost ≥ 1.72 accepts complex integrands): cos and sin
   // share each evaluation of φ, half the cost of two real integrals.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <vector>
 
 #include "lac/curves/planar/la_law.hpp"
 
@@ -77,5 +78,14 @@ struct TangentPlan {
   int count = 1;
 };
 TangentPlan tangent_plan(const LaLaw& law, const LinearQ& seg);
+
+/// Boundary layers of small |α| (|p| = |1 − 1/α| large, F ∝ |t|^p; and α = 0 over a long range of
+/// q): on [u0, u1], where t keeps its sign (it may vanish at an end), the turning concentrates
+/// within a sliver at the end of largest |F| that adaptive rules bisect past (at α = −2e-5 the
+/// whole turning of a half S lies within 1e-4 of its end; measured, docs/robustness.md). The u
+/// (ascending, inside (u0, u1)) where |F| has fallen from that end's value by e^{-d}, d = 1/4, 1/2,
+/// 1, …; empty when |F| changes by less than e^8 over the part, or |p| ≤ 8 outside the log forms
+/// (the layer is then not thin), or α = 1.
+std::vector<double> layer_cuts(const LaLaw& law, const LinearQ& seg, double u0, double u1);
 
 }  // namespace lac::detail
