@@ -28,6 +28,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "lac/common/status.hpp"
 #include "lac/solvers/method_info.hpp"
@@ -41,12 +42,18 @@ using VectorMap = Eigen::Map<Eigen::VectorXd>;
 /// r: R^N → R^M. `f(x, r)` writes the M residuals into r and returns true, or returns false where r
 /// is undefined (a trial outside the domain); a non-finite component also counts as undefined.
 struct NonlinearResidual {
+  using Function = std::function<bool(ConstVectorMap x, VectorMap r)>;
+  using FunctionWithJacobian = std::function<bool(ConstVectorMap x, VectorMap r, double* jacobian, bool& jacobian_known)>;
+  NonlinearResidual() = default;
+  NonlinearResidual(int size, Function f, FunctionWithJacobian f_with_jacobian = {})
+      : size(size), f(std::move(f)), f_with_jacobian(std::move(f_with_jacobian)) {}
+
   int size = 0;  ///< M ≥ 1
-  std::function<bool(ConstVectorMap x, VectorMap r)> f;
+  Function f;
   /// Optional, used by newton: r as `f` gives it and, where `jacobian_known` is set true, the M×N
   /// Jacobian at x (column-major in `jacobian`). Newton then calls it instead of `f` and differences
   /// only at points where the Jacobian was not given.
-  std::function<bool(ConstVectorMap x, VectorMap r, double* jacobian, bool& jacobian_known)> f_with_jacobian;
+  FunctionWithJacobian f_with_jacobian;
 };
 
 /// The norm of r for the tolerance test, Newton's descent test and the simplex's default merit.

@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <climits>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 
@@ -189,7 +188,7 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
                                  return true;
                                }};
     // Newton's Jacobian in closed form (g2_linearize), chained from q to z.
-    if (!std::getenv("LAC_NO_JAC")) residual.f_with_jacobian = [&](ConstVectorMap z, VectorMap out_r, double* jac, bool& known) {
+    residual.f_with_jacobian = [&](ConstVectorMap z, VectorMap out_r, double* jac, bool& known) {
       const double q1 = q_of_z(p, z[1]), q2 = q_of_z(p, z[2]);
       const G2Linearization v = g2_linearize(p, std::exp(z[0]), q1, q2, out.evaluations);
       out_r << v.r[0], v.r[1], v.r[2];
