@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,8 @@ void G2Options::validate() const {
     throw_input_error("g2", "max_turning", max_turning, "[pi, 200 pi]");
   if (max_iterations < 1 || max_iterations > 100000)
     throw_input_error("g2", "max_iterations", max_iterations, "[1, 100000]");
+  if (stagnation_window < 0 || stagnation_window > 100000)
+    throw_input_error("g2", "stagnation_window", stagnation_window, "[0, 100000] (0: never)");
   if (max_inner_iterations < 1 || max_inner_iterations > 100000)
     throw_input_error("g2", "max_inner_iterations", max_inner_iterations, "[1, 100000]");
   if (max_evaluations < 1) throw_input_error("g2", "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
@@ -137,17 +140,34 @@ namespace {
 
 // One turning: the system p (its phi_e = φ0 + Δ_k) solved and the curve built and checked into res
 // (status set; counters added to res.summary). `spent`: integrand evaluations of earlier turnings.
-void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detail::G2System& p, double chord_angle) {
+// `grid`: the Bézier-grid start, computed at its first use and kept for the call (it depends on the
+// end tangents' directions only, the same for every turning).
+void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detail::G2System& p, double chord_angle,
+                   std::optional<detail::G2StartEstimate>& grid) {
   Summary& sum = res.summary;
   const std::complex<double> d = pr.end.position - pr.start.position;
   const double r = std::abs(d);
   auto finish = [&](Status status, std::string message) { res.conclude(status, std::move(message)); };
 
+  const auto grid_start = [&]() -> const detail::G2StartEstimate& {
+    if (!grid) {
+      const auto t0 = std::chrono::steady_clock::now();
+      grid = detail::g2_bezier_grid_start(p);
+      res.info.start_seconds += seconds_since(t0);
+      sum.evaluations += grid->evaluations;
+    }
+    return *grid;
+  };
   auto run = [&](G2Start start) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const detail::G2StartEstimate e = start == G2Start::fast ? detail::g2_fast_start(p) : detail::g2_bezier_grid_start(p);
-    res.info.start_seconds += seconds_since(t0);
-    sum.evaluations += e.evaluations;
+    detail::G2StartEstimate e;
+    if (start == G2Start::fast) {
+      const auto t0 = std::chrono::steady_clock::now();
+      e = detail::g2_fast_start(p);
+      res.info.start_seconds += seconds_since(t0);
+      sum.evaluations += e.evaluations;
+    } else {
+      e = grid_start();
+    }
     // The run's trial curves fail once the call's budget is spent (the run counts from 0).
     p.integrate.set_limit(std::max(0L, o.max_evaluations - sum.evaluations));
     detail::G2SolverOutcome so = o.solver == G2Solver::paper
@@ -314,6 +334,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
   detail::G2System p{detail::g2_law(pr.alpha, sigma), phi0, phi1, pr.start.kappa * r, pr.end.kappa * r,
                      detail::TrialIntegrator(o.integrator)};
   std::vector<std::pair<double, std::string>> proofs, failures;  // (turning, why)
+  std::optional<detail::G2StartEstimate> grid;
   Status failed_status = Status::not_converged;
   for (int k : windings) {
     const double delta = turning_of(k);
@@ -332,7 +353,7 @@ G2Result solve_g2(const G2Problem& pr, const G2Options& o) {
     G2Result attempt;
     attempt.summary = sum;  // counters (and the call's evaluation budget) carry over
     attempt.info.start_seconds = res.info.start_seconds;
-    solve_turning(attempt, pr, o, p, chord_angle);
+    solve_turning(attempt, pr, o, p, chord_angle, grid);
     attempt.info.winding = k;
     attempt.info.turning = delta;
     attempt.info.max_turning = res.info.max_turning;

@@ -105,6 +105,9 @@ struct G2Options {
   double tolerance = 1e-12;  ///< on the normalized residuals (chord = 1, angles in rad), max-norm
   /// newton, ceres: iterations; paper: outer iterations on h; simplex: 100× this many moves.
   int max_iterations = 60;
+  /// newton: a run whose max-norm residual has not fallen by 1 % over this many iterations
+  /// stops (not_converged) and the next start or turning is tried; 0: only max_iterations stops it.
+  int stagnation_window = 10;
   int max_inner_iterations = 200;  ///< paper: bisection steps on c30 and on c10
   /// Integrand evaluations of the whole call (starts, solves, fallback): once spent, trial curves
   /// fail and the solve ends max_iterations. An adaptive method on a hard integrand can cost ~10^6

@@ -14,12 +14,13 @@ GaussLegendreRule<N> make_rule() {
   using G = boost::math::quadrature::gauss<double, N>;
   const auto& a = G::abscissa();  // non-negative half on [-1, 1] (with 0 first for odd N)
   const auto& b = G::weights();
-  static_assert(N % 2 == 0, "even rules only: no node at the centre");
   GaussLegendreRule<N> r;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    r.nodes[k] = 0.5 * (1.0 - a[k]);
-    r.nodes[N - 1 - k] = 0.5 * (1.0 + a[k]);
-    r.weights[k] = r.weights[N - 1 - k] = 0.5 * b[k];
+  const std::size_t first = N % 2;  // odd N: a[0] = 0 is the centre node, index N / 2
+  if (first) r.nodes[N / 2] = 0.5, r.weights[N / 2] = 0.5 * b[0];
+  for (std::size_t k = first; k < a.size(); ++k) {
+    r.nodes[k - first] = 0.5 * (1.0 - a[k]);
+    r.nodes[N - 1 - (k - first)] = 0.5 * (1.0 + a[k]);
+    r.weights[k - first] = r.weights[N - 1 - (k - first)] = 0.5 * b[k];
   }
   return r;
 }
@@ -31,6 +32,7 @@ const GaussLegendreRule<N>& gauss_legendre_rule() {
   static const GaussLegendreRule<N> r = make_rule<N>();
   return r;
 }
+template const GaussLegendreRule<7>& gauss_legendre_rule<7>();
 template const GaussLegendreRule<10>& gauss_legendre_rule<10>();
 template const GaussLegendreRule<12>& gauss_legendre_rule<12>();
 template const GaussLegendreRule<16>& gauss_legendre_rule<16>();

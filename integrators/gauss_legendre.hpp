@@ -1,5 +1,5 @@
 #pragma once
-// Fixed-node Gauss–Legendre quadrature: the 20- and 10-point rules on [0, 1] (nodes and weights
+// Fixed-node Gauss–Legendre quadrature: the 7- to 20-point rules on [0, 1] (nodes and weights
 // from Boost.Math's tables) and the composite method `GaussLegendre` on equal panels. A fixed rule
 // is what the G2 and S-curve solvers need: they integrate e^{iφ} over a few panels thousands of
 // times per solve, where an adaptive driver's bookkeeping would cost more than the integrand.
@@ -22,7 +22,7 @@ struct GaussLegendreRule {
   std::array<double, N> weights{};  ///< sum to 1
 };
 
-/// The N-point rule on [0, 1], built once; N ∈ {10, 12, 16, 20}.
+/// The N-point rule on [0, 1], built once; N ∈ {7, 10, 12, 16, 20}.
 template <std::size_t N>
 const GaussLegendreRule<N>& gauss_legendre_rule();
 /// The 20-point rule on [0, 1].

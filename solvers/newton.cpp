@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include "lac/common/error.hpp"
 
 #include "lac/solvers/detail/nonlinear_methods.hpp"
 
@@ -13,6 +16,9 @@ namespace lac::detail {
 namespace {
 
 enum class Eval { defined, undefined, non_finite };
+
+// The stagnation test's required fall of ‖r‖ over NewtonOptions::stagnation_window iterations.
+constexpr double kStagnationFactor = 0.99;
 
 template <int N>
 NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd& x0, const NonlinearOptions& o) {
@@ -63,6 +69,7 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     return r;
   };
   Vec xp(n), fp(n), xn(n), fn(n);
+  std::vector<double> history;  // ‖r‖ after each iteration, for the stagnation test
   while (true) {
     if (norm <= o.residual_tolerance) return finish(Status::ok, "");
     if (r.iterations >= no.max_iterations || r.evaluations >= no.max_evaluations)
@@ -92,6 +99,7 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     for (int k = 0; k <= no.max_halvings; ++k, t *= 0.5) {
       xn = x + t * dx;
       if (too_far(xn, x)) continue;
+      if (residual.norm_lower_bound && !(residual.norm_lower_bound(ConstVectorMap(xn.data(), n)) < norm)) continue;
       if (eval(xn, fn, &jac_trial, &trial_known) != Eval::defined) continue;
       const double trial_norm = residual_norm(fn, o.norm);
       if (trial_norm < norm) {
@@ -110,6 +118,13 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     }
     if (t * dx.cwiseAbs().maxCoeff() <= no.step_tolerance && norm > o.residual_tolerance)
       return finish(Status::not_converged, "newton: step below step_tolerance");
+    if (no.stagnation_window > 0) {
+      history.push_back(norm);
+      const auto w = static_cast<size_t>(no.stagnation_window);
+      if (history.size() > w && norm > o.residual_tolerance && !(norm < kStagnationFactor * history[history.size() - 1 - w]))
+        return finish(Status::not_converged, "newton: stagnated (|r| = " + format_number(norm) + " fell by less than 1 % in " +
+                                                 std::to_string(w) + " iterations)");
+    }
   }
 }
 

@@ -18,7 +18,7 @@ constexpr std::array<NonlinearMethodInfo, 3> kNonlinearMethods = {{
     {NonlinearMethod::newton, "newton", {},
      "damped Newton (M = N): the residual's Jacobian where given, else forward differences; full-pivot LU, step halving until |r| decreases",
      "residual_tolerance, norm, newton.{max_iterations, max_evaluations, fd_step, backward_differences, "
-     "reject_singular, max_step, max_trial_change, max_halvings, step_tolerance, stall_factor}"},
+     "reject_singular, max_step, max_trial_change, max_halvings, step_tolerance, stall_factor, stagnation_window}"},
     {NonlinearMethod::ceres, "ceres", kCeresAliases,
      "Ceres Solver Levenberg-Marquardt on min |r|^2/2, central-difference Jacobian",
      "residual_tolerance, norm, ceres.{max_iterations, function_tolerance, gradient_tolerance, parameter_tolerance, "
@@ -51,6 +51,8 @@ void NewtonOptions::validate() const {
   if (!(step_tolerance >= 0) || !std::isfinite(step_tolerance))
     throw_input_error(who, "step_tolerance", step_tolerance, "[0, inf)");
   if (!(stall_factor >= 1) || !std::isfinite(stall_factor)) throw_input_error(who, "stall_factor", stall_factor, "[1, inf)");
+  if (stagnation_window < 0 || stagnation_window > 100000)
+    throw_input_error(who, "stagnation_window", stagnation_window, "[0, 100000] (0: never)");
 }
 
 void CeresOptions::validate() const {

@@ -54,6 +54,10 @@ struct NonlinearResidual {
   /// Jacobian at x (column-major in `jacobian`). Newton then calls it instead of `f` and differences
   /// only at points where the Jacobian was not given.
   FunctionWithJacobian f_with_jacobian;
+  /// Optional, used by newton's line search: a cheap lower bound on ‖r(x)‖ in the solve's norm
+  /// (e.g. the residuals that need no integral). A trial whose bound is not below the current
+  /// ‖r‖ would be rejected anyway: it is not evaluated (the iterates are the same, only cheaper).
+  std::function<double(ConstVectorMap x)> norm_lower_bound;
 };
 
 /// The norm of r for the tolerance test, Newton's descent test and the simplex's default merit.
@@ -76,6 +80,10 @@ struct NewtonOptions {
   /// With no descent along the Newton direction, ‖r‖ ≤ stall_factor·residual_tolerance still counts
   /// as ok (1: it does not).
   double stall_factor = 1;
+  /// Stagnation: stop (not_converged) when ‖r‖ has not fallen by 1 % over the last
+  /// `stagnation_window` iterations (0: never): a search creeping along a kink of the max-norm
+  /// with tiny damped steps, not a converging one.
+  int stagnation_window = 0;
   void validate() const;
 };
 

@@ -5,10 +5,16 @@
 //   P4 = P5 − l3 t1,  P3 = P4 − l2 t1 + (5 κe l3² / 4) n1,
 // which fixes the end curvatures (κ(0) = (4/5) cross(P1−P0, P2−P1)/|P1−P0|³), and
 // l_i ∈ {0.05, 0.10, …, 0.5}: 10^4 candidates.
+// The derivatives are linear in the control points and P1, P2 depend only on (l0, l1), P3, P4 only
+// on (l3, l2): they are tabulated per side and node, so a candidate costs additions. J is screened
+// by the 7-point rule in single precision and the best kScreened candidates ranked by the
+// 20-point rule in double (the order of J, not its digits, picks the start).
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "lac/constructions/detail/g2_system.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
@@ -19,26 +25,82 @@ namespace {
 using Vec = Eigen::Vector2d;
 using Ctrl = std::array<Vec, 6>;
 
+constexpr int kLegs = 10;        // l = 0.05, 0.10, …, 0.5
+constexpr size_t kScreened = 32;  // candidates ranked in double precision
+constexpr int kNotInteger = 1000;
+
+// The exponent −2α − 2 of |κ| in J as an integer when it is one of at most 12 in magnitude.
+int integer_power(double alpha) {
+  const double e = -2 * alpha - 2;
+  return e == std::round(e) && std::abs(e) <= 12 ? static_cast<int>(e) : kNotInteger;
+}
+
 double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Weights of P_0 … P_5 in the first, second and third derivatives at t (Bernstein differences).
+struct Basis {
+  std::array<double, 6> d1{}, d2{}, d3{};
+};
+Basis basis(double t) {
+  const double u = 1 - t;
+  const double b4[5] = {u * u * u * u, 4 * t * u * u * u, 6 * t * t * u * u, 4 * t * t * t * u, t * t * t * t};
+  const double b3[4] = {u * u * u, 3 * t * u * u, 3 * t * t * u, t * t * t};
+  const double b2[3] = {u * u, 2 * t * u, t * t};
+  Basis b;
+  for (int i = 0; i < 5; ++i) b.d1[i + 1] += 5 * b4[i], b.d1[i] -= 5 * b4[i];
+  for (int i = 0; i < 4; ++i) b.d2[i + 2] += 20 * b3[i], b.d2[i + 1] -= 40 * b3[i], b.d2[i] += 20 * b3[i];
+  for (int i = 0; i < 3; ++i)
+    b.d3[i + 3] += 60 * b2[i], b.d3[i + 2] -= 180 * b2[i], b.d3[i + 1] += 180 * b2[i], b.d3[i] -= 60 * b2[i];
+  return b;
+}
 
 struct Derivs {
   Vec d1, d2, d3;
 };
-
 Derivs derivs(const Ctrl& P, double t) {
-  const double u = 1 - t;
-  // Bernstein bases of degrees 4, 3, 2.
-  const double b4[5] = {u * u * u * u, 4 * t * u * u * u, 6 * t * t * u * u, 4 * t * t * t * u, t * t * t * t};
-  const double b3[4] = {u * u * u, 3 * t * u * u, 3 * t * t * u, t * t * t};
-  const double b2[3] = {u * u, 2 * t * u, t * t};
+  const Basis b = basis(t);
   Derivs d{Vec::Zero(), Vec::Zero(), Vec::Zero()};
-  for (int i = 0; i < 5; ++i) d.d1 += 5.0 * b4[i] * (P[i + 1] - P[i]);
-  for (int i = 0; i < 4; ++i) d.d2 += 20.0 * b3[i] * (P[i + 2] - 2 * P[i + 1] + P[i]);
-  for (int i = 0; i < 3; ++i) d.d3 += 60.0 * b2[i] * (P[i + 3] - 3 * P[i + 2] + 3 * P[i + 1] - P[i]);
+  for (int j = 0; j < 6; ++j) d.d1 += b.d1[j] * P[j], d.d2 += b.d2[j] * P[j], d.d3 += b.d3[j] * P[j];
   return d;
 }
 
-double curvature(const Derivs& d) { return cross(d.d1, d.d2) / std::pow(d.d1.norm(), 3); }
+// x^power; by products where power is a small integer (2α an integer: the common slopes).
+template <class T>
+T power_of(T x, T power, int integer_power) {
+  if (integer_power == kNotInteger) return std::pow(x, power);
+  T r = 1;
+  const T b = integer_power < 0 ? 1 / x : x;
+  for (int i = std::abs(integer_power); i > 0; --i) r *= b;
+  return r;
+}
+
+// The integrand of J (times the speed) and the speed at one node, from the derivatives.
+template <class T>
+void j_terms(T d1x, T d1y, T d2x, T d2y, T d3x, T d3y, T alpha2, T power, int integer_power, T& num, T& speed) {
+  const T s2 = d1x * d1x + d1y * d1y;
+  speed = std::sqrt(s2);
+  const T c = d1x * d2y - d1y * d2x;
+  const T kappa = c / (s2 * speed);
+  // κ_s = κ_t / speed, κ_t = (cross(d1, d3)·s² − 3c·(d1·d2)) / speed⁵.
+  const T kappa_s = ((d1x * d3y - d1y * d3x) * s2 - 3 * c * (d1x * d2x + d1y * d2y)) / (s2 * s2 * s2);
+  const T rhs = alpha2 == 0 ? T(0) : alpha2 * power_of(std::abs(kappa), power, integer_power) * kappa_s * kappa_s;
+  num = std::sqrt(1 + rhs) * speed;
+}
+
+// J of one candidate by the N-point rule in double.
+template <size_t N>
+double j_of(const Ctrl& P, double alpha) {
+  const auto& g = gauss_legendre_rule<N>();
+  double num = 0, len = 0;
+  for (size_t k = 0; k < N; ++k) {
+    const Derivs d = derivs(P, g.nodes[k]);
+    double n = 0, speed = 0;
+    j_terms(d.d1.x(), d.d1.y(), d.d2.x(), d.d2.y(), d.d3.x(), d.d3.y(), alpha * alpha, -2 * alpha - 2, integer_power(alpha), n, speed);
+    num += g.weights[k] * n;
+    len += g.weights[k] * speed;
+  }
+  return num / len;
+}
 
 // Arc length from 0 to t by 20-point Gauss–Legendre (the speed is a smooth function of t).
 double arc_length(const Ctrl& P, double t) {
@@ -63,6 +125,17 @@ double t_at_length(const Ctrl& P, double target, double total) {
   return t;
 }
 
+double curvature(const Derivs& d) { return cross(d.d1, d.d2) / std::pow(d.d1.norm(), 3); }
+
+// The estimate from the chosen curve: its length and its curvatures at the joints.
+G2StartEstimate from_curve(const Ctrl& P, const G2System& p, G2StartEstimate e) {
+  const double total = arc_length(P, 1.0);
+  e.h = total;
+  e.k1 = curvature(derivs(P, t_at_length(P, p.s1 * total, total))) * total;
+  e.k2 = curvature(derivs(P, t_at_length(P, p.s2 * total, total))) * total;
+  return e;
+}
+
 }  // namespace
 
 G2StartEstimate g2_bezier_grid_start(const G2System& p) {
@@ -70,50 +143,79 @@ G2StartEstimate g2_bezier_grid_start(const G2System& p) {
   const Vec P0(0, 0), P5(1, 0);
   const Vec t0(std::cos(p.phi_s), std::sin(p.phi_s)), n0(-t0.y(), t0.x());
   const Vec t1(std::cos(p.phi_e), std::sin(p.phi_e)), n1(-t1.y(), t1.x());
-  const auto& x = gauss_legendre_20().nodes;
-  const auto& w = gauss_legendre_20().weights;
+  const auto leg = [](int i) { return 0.05 * (i + 1); };
+  // Control points of candidate (a, b): a = 10·i0 + i1 (left legs l0, l1), b = 10·i3 + i2 (right).
+  const auto left = [&](int a) {
+    const double l0 = leg(a / kLegs), l1 = leg(a % kLegs);
+    const Vec P1 = P0 + l0 * t0;
+    return std::pair{P1, Vec(P1 + l1 * t0 + (1.25 * p.kappa_s * l0 * l0) * n0)};
+  };
+  const auto right = [&](int b) {
+    const double l3 = leg(b / kLegs), l2 = leg(b % kLegs);
+    const Vec P4 = P5 - l3 * t1;
+    return std::pair{Vec(P4 - l2 * t1 + (1.25 * p.kappa_e * l3 * l3) * n1), P4};
+  };
+
   G2StartEstimate e;
-  double best = std::numeric_limits<double>::infinity();
-  Ctrl best_ctrl{};
-  Ctrl P;
-  P[0] = P0;
-  P[5] = P5;
-  for (int i0 = 1; i0 <= 10; ++i0) {
-    const double l0 = 0.05 * i0;
-    P[1] = P0 + l0 * t0;
-    for (int i3 = 1; i3 <= 10; ++i3) {
-      const double l3 = 0.05 * i3;
-      P[4] = P5 - l3 * t1;
-      for (int i1 = 1; i1 <= 10; ++i1) {
-        P[2] = P[1] + 0.05 * i1 * t0 + (1.25 * p.kappa_s * l0 * l0) * n0;
-        for (int i2 = 1; i2 <= 10; ++i2) {
-          P[3] = P[4] - 0.05 * i2 * t1 + (1.25 * p.kappa_e * l3 * l3) * n1;
-          // J = ∫ sqrt(1 + α² |κ|^(−2α−2) κ_s²) ds / ∫ ds, 20-point Gauss–Legendre in t.
-          double num = 0, len = 0;
-          for (size_t k = 0; k < 20; ++k) {
-            const Derivs d = derivs(P, x[k]);
-            const double speed = d.d1.norm();
-            const double c = cross(d.d1, d.d2);
-            const double kappa = c / (speed * speed * speed);
-            const double kappa_t = (cross(d.d1, d.d3) * speed * speed - 3.0 * c * d.d1.dot(d.d2)) / std::pow(speed, 5);
-            const double kappa_s = kappa_t / speed;
-            const double rhs = alpha * alpha * std::pow(std::abs(kappa), -2.0 * alpha - 2.0) * kappa_s * kappa_s;
-            num += w[k] * std::sqrt(1.0 + rhs) * speed;
-            len += w[k] * speed;
-          }
-          e.evaluations += 20;
-          const double J = num / len;
-          if (J < best) best = J, best_ctrl = P;
-        }
-      }
+  if (alpha == 0) {  // J ≡ 1: every candidate ties, and the first is taken
+    const auto [P1, P2] = left(0);
+    const auto [P3, P4] = right(0);
+    return from_curve(Ctrl{P0, P1, P2, P3, P4, P5}, p, e);
+  }
+  // Per side and node of the screening rule, the side's share of d1, d2, d3 (x, y interleaved).
+  constexpr int kSide = kLegs * kLegs;
+  const auto& gs = gauss_legendre_rule<7>();
+  constexpr size_t kN = 7;
+  std::array<Basis, kN> bases;
+  for (size_t k = 0; k < kN; ++k) bases[k] = basis(gs.nodes[k]);
+  std::vector<std::array<float, 6>> L(kSide * kN), R(kSide * kN);
+  for (int a = 0; a < kSide; ++a) {
+    const auto [P1, P2] = left(a);
+    const auto [P3, P4] = right(a);
+    for (size_t k = 0; k < kN; ++k) {
+      const Basis& B = bases[k];
+      const Vec l1 = B.d1[1] * P1 + B.d1[2] * P2, l2 = B.d2[1] * P1 + B.d2[2] * P2, l3 = B.d3[1] * P1 + B.d3[2] * P2;
+      const Vec r1 = B.d1[3] * P3 + B.d1[4] * P4 + B.d1[5] * P5, r2 = B.d2[3] * P3 + B.d2[4] * P4 + B.d2[5] * P5,
+                r3 = B.d3[3] * P3 + B.d3[4] * P4 + B.d3[5] * P5;
+      L[a * kN + k] = {float(l1.x()), float(l1.y()), float(l2.x()), float(l2.y()), float(l3.x()), float(l3.y())};
+      R[a * kN + k] = {float(r1.x()), float(r1.y()), float(r2.x()), float(r2.y()), float(r3.x()), float(r3.y())};
     }
   }
+  const float alpha2 = static_cast<float>(alpha * alpha), power = static_cast<float>(-2 * alpha - 2);
+  const int ipower = integer_power(alpha);
+  std::vector<std::pair<float, int>> screened;  // (J, candidate a·100 + b)
+  screened.reserve(kSide * kSide);
+  for (int a = 0; a < kSide; ++a) {
+    for (int b = 0; b < kSide; ++b) {
+      float num = 0, len = 0;
+      for (size_t k = 0; k < kN; ++k) {
+        const auto& l = L[a * kN + k];
+        const auto& r = R[b * kN + k];
+        float n = 0, speed = 0;
+        j_terms(l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3], l[4] + r[4], l[5] + r[5], alpha2, power, ipower, n, speed);
+        num += static_cast<float>(gs.weights[k]) * n;
+        len += static_cast<float>(gs.weights[k]) * speed;
+      }
+      const float J = num / len;
+      if (std::isfinite(J)) screened.emplace_back(J, a * kSide + b);
+    }
+  }
+  e.evaluations += static_cast<long>(kN) * kSide * kSide;
+  const size_t keep = std::min(kScreened, screened.size());
+  std::partial_sort(screened.begin(), screened.begin() + keep, screened.end());
+  double best = std::numeric_limits<double>::infinity();
+  Ctrl best_ctrl{};
+  for (size_t i = 0; i < keep; ++i) {
+    const int a = screened[i].second / kSide, b = screened[i].second % kSide;
+    const auto [P1, P2] = left(a);
+    const auto [P3, P4] = right(b);
+    const Ctrl P{P0, P1, P2, P3, P4, P5};
+    const double J = j_of<20>(P, alpha);
+    e.evaluations += 20;
+    if (J < best) best = J, best_ctrl = P;
+  }
   if (!std::isfinite(best)) return g2_fast_start(p);  // every candidate has an infinite J: no better guess
-  const double total = arc_length(best_ctrl, 1.0);
-  e.h = total;
-  e.k1 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, p.s1 * total, total))) * total;
-  e.k2 = curvature(derivs(best_ctrl, t_at_length(best_ctrl, p.s2 * total, total))) * total;
-  return e;
+  return from_curve(best_ctrl, p, e);
 }
 
 }  // namespace lac::detail

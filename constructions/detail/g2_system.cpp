@@ -166,19 +166,23 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     const auto [h, q1, q2] = g2_ten_unknown_solution(p, r.x);
     out.h = h, out.q1 = q1, out.q2 = q2;
   } else {
-    // Newton: the closed-form Jacobian (forward differences where a segment has none), no step cap, the length changing by at most e^2 per trial, 30
-    // trial steps 1 … 2^-29; a stall within 1e3·tolerance counts as converged.
+    // Newton: the closed-form Jacobian (forward differences where a segment has none), no step
+    // cap, the length changing by at most e^2 per trial, 30 trial steps 1 … 2^-29; a stall within
+    // 1e3·tolerance counts as converged; a run creeping (o.stagnation_window) stops.
     no.newton.max_iterations = o.max_iterations;
     no.newton.max_evaluations = LONG_MAX;
     no.newton.fd_step = 1e-7;
     no.newton.backward_differences = false;
     no.newton.reject_singular = false;
     no.newton.max_step = std::numeric_limits<double>::infinity();
-    no.newton.max_trial_change = Eigen::Vector3d(2.0, std::numeric_limits<double>::infinity(),
-                                                 std::numeric_limits<double>::infinity());
+    // For α > 0, z = log|κ̃| at the joints: a trial changes a joint curvature by at most e^4
+    // (unbounded, Newton wandered to κ̃ ~ 1e±300, where every trial curve is a hard integral).
+    const double z_change = p.law.alpha > 0 ? 4.0 : std::numeric_limits<double>::infinity();
+    no.newton.max_trial_change = Eigen::Vector3d(2.0, z_change, z_change);
     no.newton.max_halvings = 29;
     no.newton.step_tolerance = 0;
     no.newton.stall_factor = 1e3;
+    no.newton.stagnation_window = o.stagnation_window;
     no.simplex.max_iterations = 100 * o.max_iterations;
     no.simplex.max_evaluations = 200L * o.max_iterations;
     NonlinearResidual residual{3, [&](ConstVectorMap z, VectorMap out_r) {
@@ -198,6 +202,13 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
         for (int row = 0; row < 3; ++row) jac[3 * c + row] = v.jacobian[row][c] * dq_dz[c];
       return true;
     };
+    // The end-angle residual needs no integral: a trial it alone rejects is not integrated.
+    if (no.norm == ResidualNorm::max)
+      residual.norm_lower_bound = [&](ConstVectorMap z) {
+        const auto seg = g2_segments(p, std::exp(z[0]), q_of_z(p, z[1]), q_of_z(p, z[2]));
+        const double r0 = std::abs(seg[2].phi_b(p.law) - p.phi_e);
+        return std::isfinite(r0) ? r0 : 0.0;
+      };
     const Eigen::Vector3d z0(std::log(s.h), z_of_q(p, g2_joint_q(p, s.k1, s.h)), z_of_q(p, g2_joint_q(p, s.k2, s.h)));
     if (!z0.allFinite()) return unusable_start();
     r = solve_nonlinear(method, residual, z0, no);

@@ -55,6 +55,8 @@ const std::vector<OptionRow<lac::G2Options>>& g2_table() {
       {"tolerance", [](O& o, py::handle v) { o.tolerance = v.cast<double>(); }, "on the normalized residuals"},
       {"max_iterations", [](O& o, py::handle v) { o.max_iterations = v.cast<int>(); }, ""},
       {"max_inner_iterations", [](O& o, py::handle v) { o.max_inner_iterations = v.cast<int>(); }, ""},
+      {"stagnation_window", [](O& o, py::handle v) { o.stagnation_window = v.cast<int>(); },
+       "newton: stop a run whose residual fell by less than 1 % over this many iterations (0: never)"},
       {"max_evaluations", [](O& o, py::handle v) { o.max_evaluations = v.cast<long>(); }, ""},
       {"verify", [](O& o, py::handle v) { o.verify = v.cast<bool>(); }, "check of the residuals by the segment kernel's bound"},
   };
@@ -346,7 +348,8 @@ void bind_constructions(py::module_& m) {
         py::arg("theta1"), py::arg("kappa1"), py::arg("alpha") = -1.0,
         "G2 Hermite interpolation by three LA segments of one alpha in [-5, 5], as `lac g2`. Options: solver (newton | "
         "ceres | simplex | paper), integrator (default gauss-legendre) with h, tol, panels, start (fast | bezier-grid), "
-        "fallback, accept, tolerance, max_iterations, max_inner_iterations, max_evaluations, verify, degrees.");
+        "fallback, accept, tolerance, max_iterations, max_inner_iterations, stagnation_window, max_evaluations, verify, "
+        "degrees.");
   m.def("chain", &chain, py::arg("points"), py::kw_only(), py::arg("alpha"), py::arg("thetas") = py::none(),
         py::arg("kappas") = py::none(), py::arg("continuity") = "g1", py::arg("closed") = false,
         "One curve of LA segments through the points, G1 or G2 (continuity), tangents (and curvatures) given or "

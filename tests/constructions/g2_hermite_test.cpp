@@ -11,6 +11,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/integrators/registry.hpp"
+#include "tests/support/input_error.hpp"
 #include "tests/support/reference_csv.hpp"
 
 namespace lac {
@@ -335,6 +336,29 @@ TEST(G2Hermite, BadInputThrowsNamingTheParameter) {
   G2Result r = solve_g2(good);
   EXPECT_THROW(at(r, 1.5), InputError);
   EXPECT_THROW(r.curve.sample(1), InputError);
+}
+
+TEST(G2Hermite, AFailingSearchEndsFastAndSaysWhy) {
+  // α = 0.5, both turnings of the right sign up to 4π fail for every start and joints. The search is
+  // incomplete (not_converged, never no_solution) and names the stagnated run; its cost is bounded in
+  // integrand evaluations (not time): the Bézier grid once for the call (7·10^4 screening nodes), the
+  // runs stopped where they stagnate. Before the grid was kept per call and Newton's z steps bounded,
+  // this problem took 1.9·10^6 evaluations and 359 iterations.
+  const G2Problem p{{{0, 0}, 1.1159983189601155, 2.9614137600545964}, {{1, 0}, -1.4058147937477814, 1.4590395349120229}, 0.5};
+  const G2Result r = solve_g2(p);
+  EXPECT_EQ(r.summary.status, Status::not_converged) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("the search is not complete"), std::string::npos) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("stagnated"), std::string::npos) << r.summary.message;
+  EXPECT_LT(r.summary.evaluations, 150'000);
+  EXPECT_LT(r.summary.iterations, 150);
+  // Without the stagnation test the runs go on to the iteration cap: more iterations, no other answer.
+  G2Options o;
+  o.stagnation_window = 0;
+  const G2Result capped = solve_g2(p, o);
+  EXPECT_EQ(capped.summary.status, Status::not_converged) << capped.summary.message;
+  EXPECT_GT(capped.summary.iterations, r.summary.iterations);
+  o.stagnation_window = -1;
+  EXPECT_EQ(test::thrown_parameter([&] { solve_g2(p, o); }), "stagnation_window");
 }
 
 TEST(G2Hermite, IterationCapGivesStatusNotHang) {

@@ -271,6 +271,57 @@ TEST(Nonlinear, NewtonTrialLimitAndHalvings) {
   EXPECT_NEAR(r.x[0], std::log(50.0), 1e-12);
 }
 
+TEST(Nonlinear, NewtonSkipsTrialsItsLowerBoundRejectsAndGivesTheSameIterates) {
+  // r = (e^x − 50, y − 1) from (0, 0) under the max-norm: the trials x = 49, 24.5, … are rejected
+  // by |e^x − 50| alone. The bound |e^x − 50| (exact for that component) skips them: the same
+  // iterates, fewer residual calls.
+  long calls = 0, bounds = 0;
+  NonlinearResidual exp50{2, [&](ConstVectorMap x, VectorMap r) {
+                            ++calls;
+                            r << std::exp(x[0]) - 50, x[1] - 1;
+                            return true;
+                          }};
+  NonlinearOptions o;
+  o.norm = ResidualNorm::max;
+  o.newton.max_step = std::numeric_limits<double>::infinity();
+  const NonlinearResult plain = solve(NonlinearMethod::newton, exp50, Vec2(0, 0), o);
+  const long plain_calls = calls;
+  exp50.norm_lower_bound = [&](ConstVectorMap x) {
+    ++bounds;
+    return std::abs(std::exp(x[0]) - 50);
+  };
+  calls = 0;
+  const NonlinearResult bounded = solve(NonlinearMethod::newton, exp50, Vec2(0, 0), o);
+  ASSERT_EQ(plain.status, Status::ok) << plain.message;
+  EXPECT_EQ(bounded.status, Status::ok) << bounded.message;
+  EXPECT_EQ(bounded.x, plain.x);
+  EXPECT_EQ(bounded.iterations, plain.iterations);
+  EXPECT_GT(bounds, 0);
+  EXPECT_EQ(calls, plain_calls - 5);  // the trials x = 49, 24.5, 12.25, 6.125 of the first step, 4.40 of the second
+}
+
+TEST(Nonlinear, NewtonStopsWhereItStagnates) {
+  // |r| of (x² + 1, y) never falls below 1: from (3, 0) Newton creeps toward x = 0 with halving
+  // steps (|r| = x² + 1 falls by ~25 % per step early, then less). With a window of 5 iterations
+  // it stops not_converged once 5 iterations gained less than 1 %; without one only the cap stops it.
+  NonlinearOptions o;
+  o.norm = ResidualNorm::max;
+  o.newton.max_iterations = 200;
+  o.newton.reject_singular = false;
+  o.newton.max_step = std::numeric_limits<double>::infinity();
+  NonlinearResult r = solve(NonlinearMethod::newton, kNoRoot, Vec2(3, 0), o);
+  const int unbounded = r.iterations;
+  EXPECT_NE(r.status, Status::ok);
+  o.newton.stagnation_window = 5;
+  r = solve(NonlinearMethod::newton, kNoRoot, Vec2(3, 0), o);
+  EXPECT_EQ(r.status, Status::not_converged) << r.message;
+  EXPECT_NE(r.message.find("stagnated"), std::string::npos) << r.message;
+  EXPECT_LT(r.iterations, unbounded);
+  EXPECT_GT(r.iterations, 5);
+  // A converging solve is not stopped: Rosenbrock needs no more than a few iterations per halving of |r|.
+  EXPECT_EQ(solve(NonlinearMethod::newton, kRosenbrock, Vec2(-0.4, 1.5), o).status, Status::ok);
+}
+
 TEST(Nonlinear, InvalidInputThrows) {
   const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   NonlinearOptions o;
@@ -293,6 +344,9 @@ TEST(Nonlinear, InvalidInputThrows) {
   o = {};
   o.newton.stall_factor = 0.5;
   EXPECT_EQ(param([&] { solve(NonlinearMethod::newton, kCircleLine, Vec2(0, 0), o); }), "stall_factor");
+  o.newton = {};
+  o.newton.stagnation_window = -1;
+  EXPECT_EQ(param([&] { solve(NonlinearMethod::newton, kCircleLine, Vec2(0, 0), o); }), "stagnation_window");
   EXPECT_EQ(param([&] { solve(NonlinearMethod::ceres, kCircleLine, Vec2(kNaN, 0)); }), "x0");
   EXPECT_EQ(param([&] { solve_nonlinear(NonlinearMethod::ceres, kCircleLine, Eigen::VectorXd()); }), "x0");
   EXPECT_EQ(param([&] { solve(NonlinearMethod::newton, NonlinearResidual{0, kCircleLine.f}, Vec2(0, 0)); }),
