@@ -25,8 +25,9 @@ namespace {
 using Vec = Eigen::Vector2d;
 using Ctrl = std::array<Vec, 6>;
 
-constexpr int kLegs = 10;        // l = 0.05, 0.10, …, 0.5
-constexpr size_t kScreened = 32;  // candidates ranked in double precision
+constexpr int kLegs = 10;            // l = 0.05, 0.10, …, 0.5
+constexpr size_t kScreened = 32;     // candidates ranked in double precision
+constexpr size_t kScreenNodes = 7;   // Gauss–Legendre nodes of the screening
 constexpr int kNotInteger = 1000;
 
 // The exponent −2α − 2 of |κ| in J as an integer when it is one of at most 12 in magnitude.
@@ -64,26 +65,41 @@ Derivs derivs(const Ctrl& P, double t) {
   return d;
 }
 
-// x^power; by products where power is a small integer (2α an integer: the common slopes).
-template <class T>
-T power_of(T x, T power, int integer_power) {
-  if (integer_power == kNotInteger) return std::pow(x, power);
-  T r = 1;
-  const T b = integer_power < 0 ? 1 / x : x;
-  for (int i = std::abs(integer_power); i > 0; --i) r *= b;
-  return r;
+// x^P for an integer P, by products; P = kNotInteger: x^power by std::pow.
+template <int P, class T>
+T power_of(T x, T power) {
+  if constexpr (P == kNotInteger) {
+    return std::pow(x, power);
+  } else if constexpr (P < 0) {
+    return 1 / power_of<-P>(x, power);
+  } else if constexpr (P == 0) {
+    return T(1);
+  } else {
+    return x * power_of<P - 1>(x, power);
+  }
+}
+
+// f.template operator()<P>() with P = p as a constant (p ∈ [−12, 12] or kNotInteger).
+template <int P = -12, class F>
+void with_power(int p, F&& f) {
+  if constexpr (P > 12) {
+    f.template operator()<kNotInteger>();
+  } else {
+    if (p == P) return f.template operator()<P>();
+    with_power<P + 1>(p, f);
+  }
 }
 
 // The integrand of J (times the speed) and the speed at one node, from the derivatives.
-template <class T>
-void j_terms(T d1x, T d1y, T d2x, T d2y, T d3x, T d3y, T alpha2, T power, int integer_power, T& num, T& speed) {
+template <class T, int P>
+void j_terms(T d1x, T d1y, T d2x, T d2y, T d3x, T d3y, T alpha2, T power, T& num, T& speed) {
   const T s2 = d1x * d1x + d1y * d1y;
   speed = std::sqrt(s2);
   const T c = d1x * d2y - d1y * d2x;
   const T kappa = c / (s2 * speed);
   // κ_s = κ_t / speed, κ_t = (cross(d1, d3)·s² − 3c·(d1·d2)) / speed⁵.
   const T kappa_s = ((d1x * d3y - d1y * d3x) * s2 - 3 * c * (d1x * d2x + d1y * d2y)) / (s2 * s2 * s2);
-  const T rhs = alpha2 == 0 ? T(0) : alpha2 * power_of(std::abs(kappa), power, integer_power) * kappa_s * kappa_s;
+  const T rhs = alpha2 * power_of<P>(std::abs(kappa), power) * kappa_s * kappa_s;
   num = std::sqrt(1 + rhs) * speed;
 }
 
@@ -95,7 +111,7 @@ double j_of(const Ctrl& P, double alpha) {
   for (size_t k = 0; k < N; ++k) {
     const Derivs d = derivs(P, g.nodes[k]);
     double n = 0, speed = 0;
-    j_terms(d.d1.x(), d.d1.y(), d.d2.x(), d.d2.y(), d.d3.x(), d.d3.y(), alpha * alpha, -2 * alpha - 2, integer_power(alpha), n, speed);
+    j_terms<double, kNotInteger>(d.d1.x(), d.d1.y(), d.d2.x(), d.d2.y(), d.d3.x(), d.d3.y(), alpha * alpha, -2 * alpha - 2, n, speed);
     num += g.weights[k] * n;
     len += g.weights[k] * speed;
   }
@@ -162,45 +178,53 @@ G2StartEstimate g2_bezier_grid_start(const G2System& p) {
     const auto [P3, P4] = right(0);
     return from_curve(Ctrl{P0, P1, P2, P3, P4, P5}, p, e);
   }
-  // Per side and node of the screening rule, the side's share of d1, d2, d3 (x, y interleaved).
+  // Per side and node of the screening rule, the side's share of d1, d2, d3: the left side's as
+  // (x, y) pairs, the right side's per component over all 100 right sides (the inner loop runs over
+  // them, in SIMD lanes).
   constexpr int kSide = kLegs * kLegs;
-  const auto& gs = gauss_legendre_rule<7>();
-  constexpr size_t kN = 7;
-  std::array<Basis, kN> bases;
-  for (size_t k = 0; k < kN; ++k) bases[k] = basis(gs.nodes[k]);
-  std::vector<std::array<float, 6>> L(kSide * kN), R(kSide * kN);
+  const auto& gs = gauss_legendre_rule<kScreenNodes>();
+  std::array<Basis, kScreenNodes> bases;
+  for (size_t k = 0; k < kScreenNodes; ++k) bases[k] = basis(gs.nodes[k]);
+  std::vector<std::array<float, 6>> L(kSide * kScreenNodes);
+  std::vector<float> R(kScreenNodes * 6 * kSide);  // [node][component][right side]
   for (int a = 0; a < kSide; ++a) {
     const auto [P1, P2] = left(a);
     const auto [P3, P4] = right(a);
-    for (size_t k = 0; k < kN; ++k) {
+    for (size_t k = 0; k < kScreenNodes; ++k) {
       const Basis& B = bases[k];
       const Vec l1 = B.d1[1] * P1 + B.d1[2] * P2, l2 = B.d2[1] * P1 + B.d2[2] * P2, l3 = B.d3[1] * P1 + B.d3[2] * P2;
       const Vec r1 = B.d1[3] * P3 + B.d1[4] * P4 + B.d1[5] * P5, r2 = B.d2[3] * P3 + B.d2[4] * P4 + B.d2[5] * P5,
                 r3 = B.d3[3] * P3 + B.d3[4] * P4 + B.d3[5] * P5;
-      L[a * kN + k] = {float(l1.x()), float(l1.y()), float(l2.x()), float(l2.y()), float(l3.x()), float(l3.y())};
-      R[a * kN + k] = {float(r1.x()), float(r1.y()), float(r2.x()), float(r2.y()), float(r3.x()), float(r3.y())};
+      L[a * kScreenNodes + k] = {float(l1.x()), float(l1.y()), float(l2.x()), float(l2.y()), float(l3.x()), float(l3.y())};
+      const float rk[6] = {float(r1.x()), float(r1.y()), float(r2.x()), float(r2.y()), float(r3.x()), float(r3.y())};
+      for (int c = 0; c < 6; ++c) R[(k * 6 + c) * kSide + a] = rk[c];
     }
   }
-  const float alpha2 = static_cast<float>(alpha * alpha), power = static_cast<float>(-2 * alpha - 2);
-  const int ipower = integer_power(alpha);
   std::vector<std::pair<float, int>> screened;  // (J, candidate a·100 + b)
   screened.reserve(kSide * kSide);
-  for (int a = 0; a < kSide; ++a) {
-    for (int b = 0; b < kSide; ++b) {
-      float num = 0, len = 0;
-      for (size_t k = 0; k < kN; ++k) {
-        const auto& l = L[a * kN + k];
-        const auto& r = R[b * kN + k];
-        float n = 0, speed = 0;
-        j_terms(l[0] + r[0], l[1] + r[1], l[2] + r[2], l[3] + r[3], l[4] + r[4], l[5] + r[5], alpha2, power, ipower, n, speed);
-        num += static_cast<float>(gs.weights[k]) * n;
-        len += static_cast<float>(gs.weights[k]) * speed;
+  const float alpha2 = static_cast<float>(alpha * alpha), power = static_cast<float>(-2 * alpha - 2);
+  with_power(integer_power(alpha), [&]<int P>() {
+    for (int a = 0; a < kSide; ++a) {
+      std::array<float, kSide> num{}, len{};
+      for (size_t k = 0; k < kScreenNodes; ++k) {
+        const auto& l = L[a * kScreenNodes + k];
+        const float* r = &R[k * 6 * kSide];
+        const float w = static_cast<float>(gs.weights[k]);
+        for (int b = 0; b < kSide; ++b) {
+          float n, speed;
+          j_terms<float, P>(l[0] + r[b], l[1] + r[kSide + b], l[2] + r[2 * kSide + b], l[3] + r[3 * kSide + b],
+                            l[4] + r[4 * kSide + b], l[5] + r[5 * kSide + b], alpha2, power, n, speed);
+          num[b] += w * n;
+          len[b] += w * speed;
+        }
       }
-      const float J = num / len;
-      if (std::isfinite(J)) screened.emplace_back(J, a * kSide + b);
+      for (int b = 0; b < kSide; ++b) {
+        const float J = num[b] / len[b];
+        if (std::isfinite(J)) screened.emplace_back(J, a * kSide + b);
+      }
     }
-  }
-  e.evaluations += static_cast<long>(kN) * kSide * kSide;
+  });
+  e.evaluations += static_cast<long>(kScreenNodes) * kSide * kSide;
   const size_t keep = std::min(kScreened, screened.size());
   std::partial_sort(screened.begin(), screened.begin() + keep, screened.end());
   double best = std::numeric_limits<double>::infinity();

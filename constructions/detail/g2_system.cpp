@@ -175,9 +175,10 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     no.newton.backward_differences = false;
     no.newton.reject_singular = false;
     no.newton.max_step = std::numeric_limits<double>::infinity();
-    // For α > 0, z = log|κ̃| at the joints: a trial changes a joint curvature by at most e^4
-    // (unbounded, Newton wandered to κ̃ ~ 1e±300, where every trial curve is a hard integral).
-    const double z_change = p.law.alpha > 0 ? 4.0 : std::numeric_limits<double>::infinity();
+    // For α ≥ 0 the joint unknowns are log|κ̃| (z for α > 0, q itself for α = 0): a trial changes a
+    // joint curvature by at most e^4 (unbounded, Newton wandered to κ̃ ~ 1e±300, where every trial
+    // curve is a hard integral).
+    const double z_change = p.law.alpha >= 0 ? 4.0 : std::numeric_limits<double>::infinity();
     no.newton.max_trial_change = Eigen::Vector3d(2.0, z_change, z_change);
     no.newton.max_halvings = 29;
     no.newton.step_tolerance = 0;
