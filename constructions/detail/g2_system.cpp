@@ -50,13 +50,10 @@ std::array<LinearQ, 3> g2_segments(const G2System& p, double h, double q1, doubl
 }
 
 std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, double q2, long& evaluations) {
-  const auto seg = g2_segments(p, h, q1, q2);
-  std::complex<double> sum{};
-  for (const auto& s : seg) sum += p.integrate(p.law, s, evaluations);
-  return {seg[2].phi_b(p.law) - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
+  return g2_linearize(p, h, q1, q2, evaluations, false).r;
 }
 
-G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations) {
+G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations, bool jacobian) {
   const auto seg = g2_segments(p, h, q1, q2);
   std::array<std::complex<double>, 3> I;
   std::complex<double> sum{};
@@ -64,6 +61,7 @@ G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, 
   G2Linearization out;
   const double phi_end = seg[2].phi_b(p.law);
   out.r = {phi_end - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
+  if (!jacobian) return out;
   std::array<LaSegmentDerivatives, 3> d;
   for (int k = 0; k < 3; ++k) {
     const auto dk = segment_derivatives(p.law, seg[k], I[k]);

@@ -64,7 +64,8 @@ struct G2Linearization {
   std::array<std::array<double, 3>, 3> jacobian{};  ///< [residual][unknown]
   bool jacobian_known = false;
 };
-G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations);
+G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations,
+                             bool jacobian = true);  ///< false: the residuals only (jacobian_known false)
 
 /// q of a joint curvature estimate, forced onto the sign the law allows (α ≥ 0: sign σ, ≠ 0).
 double g2_joint_q(const G2System& p, double kappa_tilde, double h);

@@ -26,6 +26,8 @@ def test_input_error_names_parameter_and_range():
         lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, alpha=9.0)
     with pytest.raises(lac.InputError, match="solver"):
         lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, solver="gauss")
+    with pytest.raises(lac.InputError, match="stagnation_window"):
+        lac.g2_hermite(p0=(0, 0), theta0=0.6, kappa0=0.5, p1=(4, 0), theta1=-0.6, kappa1=-0.3, stagnation_window=-1)
     with pytest.raises(lac.InputError, match="p0"):
         lac.g1_hermite(p0=(0, 0, 1), theta0=0.3, p1=(1, 0), theta1=-0.4, alpha=-1.0)
     with pytest.raises(lac.InputError, match="lambda"):

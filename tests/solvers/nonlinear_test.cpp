@@ -240,18 +240,27 @@ TEST(Nonlinear, CapsAreMaxIterations) {
   }
 }
 
+// (e^x − 50, y − 1), counting its calls; and the options the tests below share.
+NonlinearResidual exp50_residual(long& calls) {
+  return {2, [&calls](ConstVectorMap x, VectorMap r) {
+            ++calls;
+            r << std::exp(x[0]) - 50, x[1] - 1;
+            return true;
+          }};
+}
+NonlinearOptions max_norm_unlimited_steps() {
+  NonlinearOptions o;
+  o.norm = ResidualNorm::max;
+  o.newton.max_step = std::numeric_limits<double>::infinity();
+  return o;
+}
+
 TEST(Nonlinear, NewtonTrialLimitAndHalvings) {
   // r = e^x − 50 (with y − 1): the first Newton step from 0 is 49; a trial change limit of 2 skips
   // the trials 49, 24.5, …, 3.06 without evaluating them (five halvings) and takes 1.53.
   long calls = 0;
-  const NonlinearResidual exp50{2, [&](ConstVectorMap x, VectorMap r) {
-                                  ++calls;
-                                  r << std::exp(x[0]) - 50, x[1] - 1;
-                                  return true;
-                                }};
-  NonlinearOptions o;
-  o.norm = ResidualNorm::max;
-  o.newton.max_step = std::numeric_limits<double>::infinity();
+  const NonlinearResidual exp50 = exp50_residual(calls);
+  NonlinearOptions o = max_norm_unlimited_steps();
   o.newton.max_trial_change = Eigen::Vector2d(2, std::numeric_limits<double>::infinity());
   o.newton.max_iterations = 1;
   NonlinearResult r = solve(NonlinearMethod::newton, exp50, Vec2(0, 0), o);
@@ -276,14 +285,8 @@ TEST(Nonlinear, NewtonSkipsTrialsItsLowerBoundRejectsAndGivesTheSameIterates) {
   // by |e^x − 50| alone. The bound |e^x − 50| (exact for that component) skips them: the same
   // iterates, fewer residual calls.
   long calls = 0, bounds = 0;
-  NonlinearResidual exp50{2, [&](ConstVectorMap x, VectorMap r) {
-                            ++calls;
-                            r << std::exp(x[0]) - 50, x[1] - 1;
-                            return true;
-                          }};
-  NonlinearOptions o;
-  o.norm = ResidualNorm::max;
-  o.newton.max_step = std::numeric_limits<double>::infinity();
+  NonlinearResidual exp50 = exp50_residual(calls);
+  const NonlinearOptions o = max_norm_unlimited_steps();
   const NonlinearResult plain = solve(NonlinearMethod::newton, exp50, Vec2(0, 0), o);
   const long plain_calls = calls;
   exp50.norm_lower_bound = [&](ConstVectorMap x) {
