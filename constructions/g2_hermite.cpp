@@ -237,6 +237,9 @@ void solve_turning(G2Result& res, const G2Problem& pr, const G2Options& o, detai
   for (size_t k = 0; k < 3; ++k) {
     if (!o.verify) {
       parts[k] = p.integrate(p.law, segments[k], sum.evaluations);
+    } else if (so.kernel_parts) {  // the kernel's, from the solver's last evaluation (the same segments)
+      parts[k] = (*so.kernel_parts)[k].value;
+      kernel_bound += (*so.kernel_parts)[k].error;
     } else if (const auto v = segment_integral(p.law, segments[k], sum.evaluations)) {
       parts[k] = v->value;
       kernel_bound += v->error;

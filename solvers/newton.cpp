@@ -99,7 +99,8 @@ NonlinearResult newton(const NonlinearResidual& residual, const Eigen::VectorXd&
     for (int k = 0; k <= no.max_halvings; ++k, t *= 0.5) {
       xn = x + t * dx;
       if (too_far(xn, x)) continue;
-      if (residual.norm_lower_bound && !(residual.norm_lower_bound(ConstVectorMap(xn.data(), n)) < norm)) continue;
+      // After a rejected full step: a converging run takes the full step, which is evaluated anyway.
+      if (k > 0 && residual.norm_lower_bound && !(residual.norm_lower_bound(ConstVectorMap(xn.data(), n)) < norm)) continue;
       if (eval(xn, fn, &jac_trial, &trial_known) != Eval::defined) continue;
       const double trial_norm = residual_norm(fn, o.norm);
       if (trial_norm < norm) {

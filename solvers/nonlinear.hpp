@@ -55,8 +55,9 @@ struct NonlinearResidual {
   /// only at points where the Jacobian was not given.
   FunctionWithJacobian f_with_jacobian;
   /// Optional, used by newton's line search: a cheap lower bound on ‖r(x)‖ in the solve's norm
-  /// (e.g. the residuals that need no integral). A trial whose bound is not below the current
-  /// ‖r‖ would be rejected anyway: it is not evaluated (the iterates are the same, only cheaper).
+  /// (e.g. the residuals that need no integral). A shortened trial step whose bound is not below
+  /// the current ‖r‖ would be rejected anyway: it is not evaluated (the iterates are the same, only
+  /// cheaper). The full step is always evaluated.
   std::function<double(ConstVectorMap x)> norm_lower_bound;
 };
 

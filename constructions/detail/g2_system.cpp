@@ -55,10 +55,10 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
 
 G2Linearization g2_linearize(const G2System& p, double h, double q1, double q2, long& evaluations, bool jacobian) {
   const auto seg = g2_segments(p, h, q1, q2);
-  std::array<std::complex<double>, 3> I;
-  std::complex<double> sum{};
-  for (int k = 0; k < 3; ++k) sum += I[k] = p.integrate(p.law, seg[k], evaluations);
   G2Linearization out;
+  auto& I = out.parts;
+  std::complex<double> sum{};
+  for (int k = 0; k < 3; ++k) sum += I[k] = p.integrate(p.law, seg[k], evaluations, &out.kernel_bounds[k]);
   const double phi_end = seg[2].phi_b(p.law);
   out.r = {phi_end - p.phi_e, h * sum.imag(), h * sum.real() - 1.0};
   if (!jacobian) return out;
@@ -191,9 +191,13 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
                                  return true;
                                }};
     // Newton's Jacobian in closed form (g2_linearize), chained from q to z.
+    // The last point evaluated with its segment integrals: the solution's, when Newton stops there.
+    Eigen::Vector3d last_z = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+    G2Linearization last;
     residual.f_with_jacobian = [&](ConstVectorMap z, VectorMap out_r, double* jac, bool& known) {
       const double q1 = q_of_z(p, z[1]), q2 = q_of_z(p, z[2]);
       const G2Linearization v = g2_linearize(p, std::exp(z[0]), q1, q2, out.evaluations);
+      last_z = z, last = v;
       out_r << v.r[0], v.r[1], v.r[2];
       known = v.jacobian_known;
       const std::array<double, 3> dq_dz{1.0, dq_of_z(p, q1), dq_of_z(p, q2)};
@@ -214,6 +218,12 @@ G2SolverOutcome solve_g2_nonlinear(NonlinearMethod method, const G2System& p, co
     out.h = std::exp(r.x[0]);
     out.q1 = q_of_z(p, r.x[1]);
     out.q2 = q_of_z(p, r.x[2]);
+    if (r.x.size() == 3 && last_z == Eigen::Vector3d(r.x) &&
+        std::all_of(last.kernel_bounds.begin(), last.kernel_bounds.end(), [](double b) { return std::isfinite(b); })) {
+      std::array<LaSegmentIntegral, 3> parts;
+      for (int k = 0; k < 3; ++k) parts[k] = {last.parts[k], last.kernel_bounds[k]};
+      out.kernel_parts = parts;
+    }
   }
   out.status = r.status;
   out.message = r.message;

@@ -9,6 +9,7 @@
 #include "lac/common/status.hpp"
 #include "lac/constructions/detail/tangent_integral.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/curves/planar/la_segment_kernel.hpp"
 #include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/solvers/nonlinear.hpp"
 
@@ -46,6 +47,9 @@ struct G2SolverOutcome {
   /// h∫e^{iφ}dS by the integrator at the solution (the normalized end point), when the solver
   /// evaluated it there: what the integrator makes of the returned curve, at no extra cost.
   std::optional<std::complex<double>> end;
+  /// The segments' integrals at the solution with the kernel's bounds, where the solver's last
+  /// evaluation was the solution and the kernel gave all three (newton with gauss-legendre).
+  std::optional<std::array<LaSegmentIntegral, 3>> kernel_parts;
 };
 
 /// The three segments for length h and joint values q1, q2 (q0, q3 from the end curvatures).
@@ -61,6 +65,10 @@ std::array<double, 3> g2_residuals(const G2System& p, double h, double q1, doubl
 /// differences).
 struct G2Linearization {
   std::array<double, 3> r{};
+  /// Each segment's ∫e^{iφ}dS by the trial integrator, and the segment kernel's error bound where
+  /// the value is the kernel's (else NaN): the result check reuses them at the solution.
+  std::array<std::complex<double>, 3> parts{};
+  std::array<double, 3> kernel_bounds{};
   std::array<std::array<double, 3>, 3> jacobian{};  ///< [residual][unknown]
   bool jacobian_known = false;
 };

@@ -30,14 +30,18 @@ bool resolvable(const LaLaw& law, const LinearQ& seg) {
 }
 
 template <class M>
-Complex trial_integral(const void* method, const LaLaw& law, const LinearQ& seg, long& evaluations) {
+Complex trial_integral(const void* method, const LaLaw& law, const LinearQ& seg, long& evaluations, double* bound) {
   const M& m = *static_cast<const M*>(method);
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (bound) *bound = kNaN;
   if constexpr (std::is_same_v<M, GaussLegendre>) {
     // The segment kernel (curves/planar/la_segment_kernel.hpp), on the same trial domain as every
     // method; the graded fast path where the kernel does not evaluate the segment.
     if (!resolvable(law, seg)) return {kNaN, kNaN};
-    if (const auto k = segment_integral(law, seg, evaluations)) return k->value;
+    if (const auto k = segment_integral(law, seg, evaluations)) {
+      if (bound) *bound = k->error;
+      return k->value;
+    }
     return integrate_tangent(law, seg, evaluations, m.panels);
   } else {
     // The same trial domain for every method: a piece turning more than the fast path resolves is a

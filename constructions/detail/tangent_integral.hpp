@@ -28,16 +28,22 @@ namespace lac::detail {
 class TrialIntegrator {
  public:
   explicit TrialIntegrator(const AnyQuadrature& method, long limit = std::numeric_limits<long>::max());
-  std::complex<double> operator()(const LaLaw& law, const LinearQ& seg, long& evaluations) const {
-    if (evaluations >= limit_) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-    return integrate_(method_, law, seg, evaluations);
+  /// `kernel_bound` (optional): the segment kernel's error bound where the value is the kernel's
+  /// (segment_integral of curves/planar/la_segment_kernel.hpp, gauss-legendre), else NaN.
+  std::complex<double> operator()(const LaLaw& law, const LinearQ& seg, long& evaluations,
+                                  double* kernel_bound = nullptr) const {
+    if (evaluations >= limit_) {
+      if (kernel_bound) *kernel_bound = std::numeric_limits<double>::quiet_NaN();
+      return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    }
+    return integrate_(method_, law, seg, evaluations, kernel_bound);
   }
   /// Calls whose counter has reached `limit` give NaN (no limit: the largest long).
   void set_limit(long limit) { limit_ = limit; }
   long limit() const { return limit_; }
 
  private:
-  using Integrate = std::complex<double> (*)(const void*, const LaLaw&, const LinearQ&, long&);
+  using Integrate = std::complex<double> (*)(const void*, const LaLaw&, const LinearQ&, long&, double*);
   const void* method_ = nullptr;
   Integrate integrate_ = nullptr;
   long limit_ = std::numeric_limits<long>::max();
