@@ -8,7 +8,8 @@
 // The derivatives are linear in the control points and P1, P2 depend only on (l0, l1), P3, P4 only
 // on (l3, l2): they are tabulated per side and node, so a candidate costs additions. J is screened
 // by the 7-point rule in single precision and the best kScreened candidates ranked by the
-// 20-point rule in double (the order of J, not its digits, picks the start).
+// 20-point rule in double. J is flat near its minimum, below what these rules resolve
+// (docs/hermite.md): a candidate near the minimum, not one particular candidate, is the start.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
