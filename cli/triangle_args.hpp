@@ -17,10 +17,11 @@ struct TriangleArgs {
   std::optional<std::string> points;
   std::string solver = "toms748";
   QuadratureArgs quadrature{.integrator = "auto"};
+  std::optional<double> max_evaluations;
 };
 
-/// --points (3 control points), --solver (1-D registry), --integrator and its options, and the
-/// common options.
+/// --points (3 control points), --solver (1-D registry), --integrator and its options,
+/// --max-evaluations, and the common options.
 void add_triangle_options(CLI::App& sub, TriangleArgs& a);
 
 /// The control triangle and the construction's options from the arguments (InputError naming

@@ -7,6 +7,8 @@ void add_triangle_options(CLI::App& sub, TriangleArgs& a) {
   sub.add_option("--points", a.points, "Control points \"x0,y0 x1,y1 x2,y2\": start, tangent intersection, end (required)");
   sub.add_option("--solver", a.solver, "Root finder: " + solver_names(root_methods()))->capture_default_str();
   add_quadrature_options(sub, a.quadrature, "auto (the construction's default, gk-tanh-sinh)");
+  sub.add_option("--max-evaluations", a.max_evaluations,
+                 "Integrand evaluations the search may spend, in [1, 1e12] (default 1e8; then status max_iterations)");
   add_common_options(sub, a.common, true);
   add_export_options(sub, a.common);
 }
@@ -16,6 +18,11 @@ PreparedTriangle prepare_triangle(const TriangleArgs& a) {
   PreparedTriangle s{{{p[0][0], p[0][1]}, {p[1][0], p[1][1]}, {p[2][0], p[2][1]}}, {}, false};
   s.options.solver = parse_root_method(a.solver);
   s.options.accept = a.common.accept;
+  if (a.max_evaluations) {
+    const double m = *a.max_evaluations;
+    if (!(m >= 1 && m <= 1e12)) throw_input_error("lac", "max-evaluations", m, "[1, 1e12]");
+    s.options.max_evaluations = static_cast<long>(m);
+  }
   if (a.quadrature.integrator != "auto") {
     s.options.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
     s.explicit_integrator = true;

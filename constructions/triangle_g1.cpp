@@ -361,6 +361,14 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
   Status failed = Status::ok;
   std::string failed_message;
   auto mismatch = [&](double x) {
+    if (sum.evaluations >= o.max_evaluations) {
+      if (failed == Status::ok) {
+        failed = Status::max_iterations;
+        failed_message = "the evaluation budget (max_evaluations = " + std::to_string(o.max_evaluations) +
+                         ") is spent after " + std::to_string(sum.constructions) + " trial curves";
+      }
+      return std::numeric_limits<double>::quiet_NaN();
+    }
     Trial t = draw(p, p.lambda_of(x), method);
     ++sum.constructions;
     sum.evaluations += t.evaluations;
@@ -574,6 +582,8 @@ void TriangleOptions::validate() const {
   if (!(min_turning > 0 && min_turning < 0.1)) throw_input_error("TriangleOptions", "min_turning", min_turning, "(0, 0.1)");
   if (max_bracket_probes < 1 || max_bracket_probes > 30)
     throw_input_error("TriangleOptions", "max_bracket_probes", max_bracket_probes, "[1, 30]");
+  if (max_evaluations < 1 || max_evaluations > 1'000'000'000'000)
+    throw_input_error("TriangleOptions", "max_evaluations", static_cast<double>(max_evaluations), "[1, 1e12]");
   if (!(tangent_tolerance > 0)) throw_input_error("TriangleOptions", "tangent_tolerance", tangent_tolerance, "(0, inf)");
   validate_accept("TriangleOptions", accept);
 }

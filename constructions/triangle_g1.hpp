@@ -70,6 +70,11 @@ struct TriangleOptions {
   /// (rad) and the positions' error estimate relative to the chord |a2 − a0|: beyond it the
   /// result is inaccurate (not usable).
   double accept = kDefaultAccept;
+  /// Integrand evaluations of the whole call (both searches of solve_g1 counted apart): a trial
+  /// curve is not drawn once they are spent, and the search ends max_iterations. One trial may
+  /// overshoot by its own method's budget (rk4: max_steps). A fixed-step method on a long trial
+  /// curve costs ~10^6 evaluations a trial; [1, 1e12].
+  long max_evaluations = 100'000'000;
 
   void validate() const;
 };

@@ -9,11 +9,12 @@
 //   exp_oracle_campaign --construction all --count 1000 --seed 1 --threads 2         (main job)
 //   exp_oracle_campaign --long --revision R --construction g1 --count 1000000      (long campaign)
 //
-// --long writes one file per construction, results/oracle_long_<construction>.{md,csv} (its row,
-// the code revision R the binary was built from, its findings; times in _timing), and then
-// results/robustness_oracle_long.md, the rows of every oracle_long_*.md present: a campaign of
+// --long writes one file per construction and slice, results/oracle_long_<construction>.{md,csv}
+// (--first 0) or oracle_long_<construction>_from_<first>.{md,csv} (its row, the code revision R
+// the binary was built from, its findings; times in _timing), and then
+// results/robustness_oracle_long.md, one row per construction summing its slices: a campaign of
 // 10^6 problems per construction takes hours for some, so it is run construction by construction
-// (scripts/oracle_long.sh) and each row says which code it checked.
+// and slice by slice (scripts/oracle_long.sh), and each row says which code it checked.
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
@@ -57,28 +58,121 @@ void splice_section(const std::filesystem::path& file, const std::string& sectio
   std::ofstream(file) << text;
 }
 
-/// The table row of `name` in results/oracle_long_<name>.md (its line starting "| name |").
-std::string long_row(const std::filesystem::path& file, const std::string& name) {
+/// The file stem of a long-campaign slice: oracle_long_<name> from problem 0, else
+/// oracle_long_<name>_from_<first>.
+std::string long_stem(const std::string& name, long first) {
+  return "oracle_long_" + name + (first == 0 ? "" : "_from_" + std::to_string(first));
+}
+
+/// The cells of the table row of `name` in a slice's .md file (its line starting "| name |").
+std::vector<std::string> long_row(const std::filesystem::path& file, const std::string& name) {
   std::ifstream in(file);
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("| " + name + " |", 0) == 0) return line;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("| " + name + " |", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line.substr(1));
+    for (std::string cell; std::getline(ss, cell, '|');) {
+      const auto a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
+      cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+    }
+    return cells;
+  }
   return {};
 }
 
-/// Rewrites <out>/robustness_oracle_long.md from the rows of every <out>/oracle_long_*.md.
-void write_long_summary(const std::filesystem::path& out, const std::string& header, const std::string& description) {
-  std::vector<std::string> rows;
+/// One summary row from the rows of a construction's slices (columns as the slices' tables):
+/// counts summed, other_statuses summed per status, the worst ratio the largest, the revisions
+/// and seeds listed, first the smallest. `coverage` says which problems the slices cover.
+std::vector<std::string> sum_slices(const std::vector<std::string>& columns, std::vector<std::vector<std::string>> rows,
+                                    std::string& coverage) {
+  auto col = [&](const std::string& c) { return static_cast<size_t>(std::find(columns.begin(), columns.end(), c) - columns.begin()); };
+  const size_t first = col("first"), problems = col("problems"), seed = col("seed");
+  std::sort(rows.begin(), rows.end(), [&](const auto& a, const auto& b) {
+    return std::make_pair(a[seed], std::stol(a[first])) < std::make_pair(b[seed], std::stol(b[first]));
+  });
+  std::vector<std::string> sum = rows.front();
+  std::map<std::string, long> statuses;
+  double worst = -1;
+  for (size_t c = 0; c < columns.size(); ++c) {
+    const std::string& name = columns[c];
+    if (name == "construction" || c == first) continue;
+    if (name == "revision" || c == seed) {
+      std::vector<std::string> seen;
+      for (const auto& r : rows)
+        if (std::find(seen.begin(), seen.end(), r[c]) == seen.end()) seen.push_back(r[c]);
+      sum[c] = seen.front();
+      for (size_t i = 1; i < seen.size(); ++i) sum[c] += " " + seen[i];
+    } else if (name == "other_statuses") {
+      for (const auto& r : rows) {
+        std::stringstream ss(r[c]);
+        for (std::string item; std::getline(ss, item, ',');) {
+          std::stringstream is(item);
+          std::string key;
+          long n = 0;
+          if (is >> key >> n) statuses[key] += n;
+        }
+      }
+      sum[c].clear();
+      for (const auto& [k, n] : statuses) sum[c] += (sum[c].empty() ? "" : ", ") + k + " " + std::to_string(n);
+      if (sum[c].empty()) sum[c] = "0";
+    } else if (name == "worst_error_over_accept") {
+      for (const auto& r : rows)
+        if (const double w = std::stod(r[c]); w > worst) worst = w, sum[c] = r[c];
+    } else {
+      long total = 0;
+      for (const auto& r : rows) total += std::stol(r[c]);
+      sum[c] = std::to_string(total);
+    }
+  }
+  // Coverage: the slices in order, and whether they tile first … first + problems − 1 of one seed.
+  bool tiled = true;
+  coverage.clear();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const long f = std::stol(rows[i][first]), n = std::stol(rows[i][problems]);
+    coverage += (i ? ", " : "") + std::to_string(f) + "…" + std::to_string(f + n - 1);
+    if (i > 0 && (rows[i][seed] != rows[i - 1][seed] ||
+                  f != std::stol(rows[i - 1][first]) + std::stol(rows[i - 1][problems])))
+      tiled = false;
+  }
+  coverage += tiled ? " (contiguous)" : " (NOT contiguous: overlapping, gapped or of different seeds; `problems` counts every slice)";
+  return sum;
+}
+
+/// Rewrites <out>/robustness_oracle_long.md: per construction, the sum of the rows of its
+/// slices <out>/oracle_long_<name>.md and <out>/oracle_long_<name>_from_<first>.md.
+void write_long_summary(const std::filesystem::path& out, const std::vector<std::string>& columns,
+                        const std::string& header, const std::string& description) {
+  std::vector<std::string> lines, notes;
   for (const std::string& name : oracle::constructions()) {
-    const auto file = out / ("oracle_long_" + name + ".md");
-    if (std::filesystem::exists(file))
-      if (std::string row = long_row(file, name); !row.empty()) rows.push_back(row);
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+      const std::string file = entry.path().filename().string(), stem = "oracle_long_" + name;
+      const bool whole = file == stem + ".md";
+      const bool slice = file.rfind(stem + "_from_", 0) == 0 && file.size() > 3 && file.ends_with(".md") &&
+                         file.find_first_not_of("0123456789", stem.size() + 6) == file.size() - 3;
+      if (!whole && !slice) continue;
+      if (auto row = long_row(entry.path(), name); row.size() == columns.size()) rows.push_back(std::move(row));
+    }
+    if (rows.empty()) continue;
+    std::string coverage;
+    const auto sum = sum_slices(columns, rows, coverage);
+    std::string line = "|";
+    for (const auto& cell : sum) line += " " + cell + " |";
+    lines.push_back(line);
+    if (rows.size() > 1) notes.push_back("- " + name + ": " + std::to_string(rows.size()) + " slices, problems " + coverage);
   }
   std::ofstream md(out / "robustness_oracle_long.md");
   md << "# Robustness: long oracle campaign\n\n"
-     << "Written by `exp_oracle_campaign --long` (each row by the command in its own file, "
-        "oracle_long_<construction>.md, with its findings) — do not edit by hand; rerun the commands.\n\n"
+     << "Written by `exp_oracle_campaign --long` (one row per construction, the sum of its slices; each slice by the "
+        "command in its own file, oracle_long_<construction>.md from problem 0 or "
+        "oracle_long_<construction>_from_<first>.md, with its findings) — do not edit by hand; rerun the "
+        "commands.\n\n"
      << description << "\n\n" << header;
-  for (const auto& r : rows) md << r << "\n";
+  for (const auto& l : lines) md << l << "\n";
+  if (!notes.empty()) {
+    md << "\nSlices:\n\n";
+    for (const auto& n : notes) md << n << "\n";
+  }
 }
 
 }  // namespace
@@ -111,6 +205,10 @@ int main(int argc, char** argv) {
                "write results/oracle_long_<construction>.md per construction and the summary "
                "results/robustness_oracle_long.md (instead of the main job's robustness_oracle.md)");
   app.add_option("--revision", revision, "code revision the binary was built from, recorded in each --long row");
+  oracle::Settings settings;
+  app.add_option("--max-evaluations", settings.max_evaluations,
+                 "integrand-evaluation budget of each g2, scurve and compound solve (default: the library's)")
+      ->check(CLI::Range(1L, 1'000'000'000'000L));
   CLI11_PARSE(app, argc, argv);
   if (long_campaign && revision.empty()) {
     std::cerr << "exp_oracle_campaign: --revision: needed with --long (the commit the binary was built from)\n";
@@ -136,7 +234,7 @@ int main(int argc, char** argv) {
     long n = count;
     for (const std::string& c : counts)
       if (c.rfind(name + "=", 0) == 0) n = std::stol(c.substr(name.size() + 1));
-    const oracle::Tally tally = oracle::run_campaign(name, first, n, seed);
+    const oracle::Tally tally = oracle::run_campaign(name, first, n, seed, settings);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::string others;
     for (const auto& [k, n] : tally.statuses) others += (others.empty() ? "" : ", ") + k + " " + std::to_string(n);
@@ -211,8 +309,12 @@ int main(int argc, char** argv) {
       io::ResultDoc d = doc;
       d.title = "Robustness: long oracle campaign, " + names[i];
       d.description += " `revision`: the commit the binary was built from; problems first … first + problems − 1 of the seed.";
+      if (settings.max_evaluations > 0)
+        d.description += " Each g2, scurve and compound solve may spend " + std::to_string(settings.max_evaluations) +
+                         " integrand evaluations (--max-evaluations; the library's default otherwise): one that spends "
+                         "them ends max_iterations, counted in other_statuses.";
       d.notes = findings_of[i].second.empty() ? "No finding." : "### Findings\n" + findings_of[i].second;
-      io::write_result_table_with_timing(out, "oracle_long_" + names[i], d, one, {"construction"}, timing_columns,
+      io::write_result_table_with_timing(out, long_stem(names[i], first), d, one, {"construction"}, timing_columns,
                                          timing_description);
       if (header_table.columns.empty())
         for (const auto& c : one.columns)
@@ -220,7 +322,7 @@ int main(int argc, char** argv) {
             header_table.columns.push_back(c);
     }
     const std::string table = header_table.markdown();  // header and separator lines only
-    write_long_summary(out, table, doc.description);
+    write_long_summary(out, header_table.columns, table, doc.description);
     return bad && fail_on_finding ? 1 : 0;
   }
   io::write_result_table_with_timing(out, "robustness_oracle", doc, full, {"construction"}, timing_columns,

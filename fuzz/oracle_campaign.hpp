@@ -47,6 +47,15 @@ constexpr double kPi = std::numbers::pi;
 /// The accept bound of positions (eval, quadratic): relative to the arc length from the reference point.
 constexpr double kPositionAccept = 1e-6;
 
+/// Campaign-wide settings of the solves (recorded by the campaign's command line).
+struct Settings {
+  /// > 0: the integrand-evaluation budget of each g2, scurve and compound solve (their options'
+  /// max_evaluations) instead of the library's default; a solve that spends it ends
+  /// max_iterations (not usable, no verdict). Bounds the cost of the rare slow solves (a paper
+  /// solver or a fixed-step rk4 on a long curve: seconds each) in a long campaign.
+  long max_evaluations = 0;
+};
+
 inline const std::vector<std::string>& constructions() {
   static const std::vector<std::string> names{"g1", "g2", "scurve", "chain", "compound", "quadratic", "eval", "space"};
   return names;
@@ -426,7 +435,7 @@ inline PlanarSpec g2_spec(const G2Problem& p) {
   return spec;
 }
 
-inline Record run_g2(Rng& rng) {
+inline Record run_g2(Rng& rng, const Settings& settings) {
   G2Problem p;
   p.alpha = draw_alpha(rng, 0.02);
   p.start.position = rng.point(10);
@@ -440,6 +449,7 @@ inline Record run_g2(Rng& rng) {
   if (rng.chance(0.05)) p.start.kappa = 0;
   if (rng.chance(0.3)) p.end.kappa = std::copysign(p.end.kappa, p.start.kappa);
   G2Options o;
+  if (settings.max_evaluations > 0) o.max_evaluations = settings.max_evaluations;
   const double u = rng.uniform(0, 1);
   o.solver = u < 0.85 ? G2Solver::newton : u < 0.95 ? G2Solver::ceres : u < 0.99 ? G2Solver::paper : G2Solver::simplex;
   o.grid_fallback = rng.chance(0.2);
@@ -467,7 +477,7 @@ inline Record run_g2(Rng& rng) {
 // ------------------------------------------------------------------------------------------------
 // S-curve (constructions/s_curve.hpp).
 
-inline Record run_scurve(Rng& rng) {
+inline Record run_scurve(Rng& rng, const Settings& settings) {
   const double alpha = rng.chance(0.3) ? -std::array{5.0, 3.0, 2.0, 1.0, 0.5, 0.1}[static_cast<size_t>(rng.integer(0, 5))]
                                        : -rng.uniform(1e-3, 5);
   const std::complex<double> P0 = rng.point(10);
@@ -478,6 +488,7 @@ inline Record run_scurve(Rng& rng) {
   const std::complex<double> P1 = P0 + std::polar(chord * rng.uniform(0.1, 0.6), t0);
   const std::complex<double> P2 = P3 - std::polar(chord * rng.uniform(0.1, 0.6), t1);
   SCurveOptions o;
+  if (settings.max_evaluations > 0) o.max_evaluations = settings.max_evaluations;
   o.solver = rng.chance(0.7) ? RootMethod::toms748 : RootMethod::bisection;
   const std::string integrator = rng.chance(0.7) ? "gauss-legendre" : quadrature_names()[static_cast<size_t>(rng.integer(0, 4))];
   const std::string input = "solve_s_curve P " + pt(P0) + " " + pt(P1) + " " + pt(P2) + " " + pt(P3) + " alpha " +
@@ -652,7 +663,7 @@ inline Record run_chain(Rng& rng) {
 // ------------------------------------------------------------------------------------------------
 // Control-triangle G1 and compound segments (constructions/triangle_g1.hpp).
 
-inline Record run_compound(Rng& rng) {
+inline Record run_compound(Rng& rng, const Settings& settings) {
   const std::complex<double> a0 = rng.point(10);
   const double psi = rng.uniform(-kPi, kPi);
   const double leg0 = std::pow(10.0, rng.uniform(-2, 2)), leg1 = leg0 * std::pow(10.0, rng.uniform(-1.5, 1.5));
@@ -663,6 +674,7 @@ inline Record run_compound(Rng& rng) {
   const double alpha0 = draw_alpha(rng, 0), alpha1 = monotone ? alpha0 : draw_alpha(rng, 0);
   const double r = rng.uniform(0.02, 0.98);
   TriangleOptions o;
+  if (settings.max_evaluations > 0) o.max_evaluations = settings.max_evaluations;
   const std::string integrator = quadrature_names()[static_cast<size_t>(rng.integer(0, static_cast<int>(quadrature_names().size()) - 1))];
   const auto& roots = root_methods();
   const std::string solver(roots[static_cast<size_t>(rng.integer(0, static_cast<int>(roots.size()) - 1))].name);
@@ -878,14 +890,14 @@ inline Record run_space(Rng& rng) {
   return not_usable(res.summary);
 }
 
-inline Record run_one(const std::string& construction, unsigned long seed, long index) {
+inline Record run_one(const std::string& construction, unsigned long seed, long index, const Settings& settings = {}) {
   Rng rng(seed, construction, index);
   try {
     if (construction == "g1") return run_g1(rng);
-    if (construction == "g2") return run_g2(rng);
-    if (construction == "scurve") return run_scurve(rng);
+    if (construction == "g2") return run_g2(rng, settings);
+    if (construction == "scurve") return run_scurve(rng, settings);
     if (construction == "chain") return run_chain(rng);
-    if (construction == "compound") return run_compound(rng);
+    if (construction == "compound") return run_compound(rng, settings);
     if (construction == "eval") return run_eval(rng);
     if (construction == "quadratic") return run_quadratic(rng);
     if (construction == "space") return run_space(rng);
@@ -899,11 +911,12 @@ inline Record run_one(const std::string& construction, unsigned long seed, long 
 
 /// Runs problems [first, first + count) of one construction (in parallel under the caller's
 /// TBB settings) and tallies them.
-inline Tally run_campaign(const std::string& construction, long first, long count, unsigned long seed) {
+inline Tally run_campaign(const std::string& construction, long first, long count, unsigned long seed,
+                          const Settings& settings = {}) {
   return tbb::parallel_reduce(
       tbb::blocked_range<long>(first, first + count, 16), Tally{},
       [&](const tbb::blocked_range<long>& r, Tally t) {
-        for (long i = r.begin(); i != r.end(); ++i) t.add(i, run_one(construction, seed, i));
+        for (long i = r.begin(); i != r.end(); ++i) t.add(i, run_one(construction, seed, i, settings));
         return t;
       },
       [](Tally a, const Tally& b) {

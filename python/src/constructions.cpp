@@ -70,6 +70,7 @@ const std::vector<OptionRow<lac::TriangleOptions>>& triangle_table() {
        "bisection | secant | toms748 | ceres"},
       {"max_iterations", [](O& o, py::handle v) { o.root.max_iterations = v.cast<int>(); }, ""},
       {"tangent_tolerance", [](O& o, py::handle v) { o.tangent_tolerance = v.cast<double>(); }, ""},
+      {"max_evaluations", [](O& o, py::handle v) { o.max_evaluations = v.cast<long>(); }, ""},
   };
   return t;
 }
@@ -357,7 +358,8 @@ void bind_constructions(py::module_& m) {
         "of g1_hermite or g2_hermite, degrees.");
   m.def("compound", &compound, py::arg("points"), py::kw_only(), py::arg("alpha0"), py::arg("alpha1"), py::arg("r") = 0.5,
         "Compound-rhythm LA curve (two LCG slopes, G3 joint) from a control triangle, as `lac compound`. Options: "
-        "solver (bisection | secant | toms748 | ceres), integrator with h, tol, panels, max_iterations, tangent_tolerance.");
+        "solver (bisection | secant | toms748 | ceres), integrator with h, tol, panels, max_iterations, tangent_tolerance, "
+        "max_evaluations.");
   m.def("space", &space, py::kw_only(), py::arg("p0"), py::arg("v0"), py::arg("p1"), py::arg("v1"), py::arg("alpha"),
         py::arg("beta"), py::arg("omega") = 0.1, py::arg("type") = 1, py::arg("alpha1") = py::none(),
         py::arg("beta1") = py::none(), py::arg("r_theta") = py::none(),

@@ -125,6 +125,10 @@ def test_chain_compound_space(lac_cli):
     j = cli(lac_cli, "compound", "--points", "0,0 1,0 2,1", "--alpha0", "-0.5", "--alpha1", "1.5", "--r", "0.4")
     assert cp.status == j["status"] and cp.curve.length == pytest.approx(j["length"], rel=1e-14)
     assert len(cp.curve.segments) == 2 and cp.info["joint"] is not None
+    spent = lac.compound([(0, 0), (1, 0), (2, 1)], alpha0=-0.5, alpha1=1.5, r=0.4, integrator="rk4", max_evaluations=10)
+    assert spent.status == "max_iterations" and "max_evaluations = 10" in spent.message
+    with pytest.raises(ValueError, match="max_evaluations"):
+        lac.compound([(0, 0), (1, 0), (2, 1)], alpha0=-0.5, alpha1=1.5, r=0.4, max_evaluations=0)
 
     sp = lac.space(p0=(0, 0, 0), v0=(1, 0, 0), p1=(1, 1, 0.3), v1=(0, 1, 0.2), alpha=0.0, beta=0.0, omega=0.1)
     j = cli(lac_cli, "space", "--p0", "0,0,0", "--v0", "1,0,0", "--p1", "1,1,0.3", "--v1", "0,1,0.2", "--alpha", "0",

@@ -142,6 +142,14 @@ TEST(CliTriangle, StatusesAndBadInput) {
   const test::CliRun collinear = test::run_lac("compound --points '0,0 1,0 2,0' --alpha0 1 --alpha1 2");
   EXPECT_EQ(collinear.status, 2);
   EXPECT_NE(collinear.out.find("turning"), std::string::npos) << collinear.out;
+  // The search's evaluation budget: out of range names the option (exit 2); spent, the status says
+  // so (exit 3).
+  const test::CliRun budget = test::run_lac(kCompound + " --max-evaluations 0");
+  EXPECT_EQ(budget.status, 2);
+  EXPECT_NE(budget.out.find("max-evaluations"), std::string::npos) << budget.out;
+  const nlohmann::ordered_json spent = test::run_lac_json(kCompound + " --integrator rk4 --max-evaluations 10", 3);
+  EXPECT_EQ(spent["status"], "max_iterations") << spent.dump();
+  EXPECT_NE(spent["message"].get<std::string>().find("max_evaluations = 10"), std::string::npos) << spent.dump();
 }
 
 }  // namespace

@@ -589,6 +589,30 @@ TEST(PlanarSegments, FailedTrialPositionsAreTheStatus) {
   }
 }
 
+// The search stops drawing trial curves once max_evaluations is spent: max_iterations, the budget
+// named, the work bounded by the budget plus one trial (its method's own budget). With the default
+// budget the same triangle is solved.
+TEST(PlanarSegments, EvaluationBudgetEndsTheSearch) {
+  TriangleOptions o;
+  o.integrator = Rk4{};  // h = 1e-3: ~10^4 evaluations a trial curve here
+  const ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
+  const TriangleResult full = solve_compound(t, -1, 1.5, 0.4, o);
+  ASSERT_TRUE(full.usable()) << full.summary.message;
+  const long per_trial = full.summary.evaluations / full.summary.constructions;
+  o.max_evaluations = 3 * per_trial;
+  for (bool compound : {false, true}) {
+    const TriangleResult g = compound ? solve_compound(t, -1, 1.5, 0.4, o) : solve_g1(t, -1.0, o);
+    EXPECT_EQ(g.summary.status, Status::max_iterations) << g.summary.message;
+    EXPECT_NE(g.summary.message.find("max_evaluations = " + std::to_string(o.max_evaluations)), std::string::npos)
+        << g.summary.message;
+    EXPECT_TRUE(g.curve.segments().empty());
+    EXPECT_LE(g.summary.evaluations, (compound ? 1 : 2) * (o.max_evaluations + 2 * per_trial)) << "both searches of solve_g1";
+    EXPECT_GT(g.summary.evaluations, 0);
+  }
+  o.max_evaluations = 0;
+  expect_input_error([&] { solve_g1(t, 1, o); }, "max_evaluations");
+}
+
 // Triangles that failed with an integrator other than the construction's own default, or near
 // the edges of the search (one leg 10^5 times the other): solved ok on the default integrator,
 // end point and tangents met, the same curve as the G1 Hermite solver's (an independent method),
