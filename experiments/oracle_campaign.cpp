@@ -207,7 +207,8 @@ int main(int argc, char** argv) {
   app.add_option("--revision", revision, "code revision the binary was built from, recorded in each --long row");
   oracle::Settings settings;
   app.add_option("--max-evaluations", settings.max_evaluations,
-                 "integrand-evaluation budget of each g2, scurve and compound solve (default: the library's)")
+                 "integrand-evaluation budget of each g2, scurve and compound solve and (where lower than "
+                 "the method's own) each quadratic position (default: the library's)")
       ->check(CLI::Range(1L, 1'000'000'000'000L));
   CLI11_PARSE(app, argc, argv);
   if (long_campaign && revision.empty()) {
@@ -310,7 +311,8 @@ int main(int argc, char** argv) {
       d.title = "Robustness: long oracle campaign, " + names[i];
       d.description += " `revision`: the commit the binary was built from; problems first … first + problems − 1 of the seed.";
       if (settings.max_evaluations > 0)
-        d.description += " Each g2, scurve and compound solve may spend " + std::to_string(settings.max_evaluations) +
+        d.description += " Each g2, scurve and compound solve, and each quadratic position, may spend at most " +
+                         std::to_string(settings.max_evaluations) +
                          " integrand evaluations (--max-evaluations; the library's default otherwise): one that spends "
                          "them ends max_iterations, counted in other_statuses.";
       d.notes = findings_of[i].second.empty() ? "No finding." : "### Findings\n" + findings_of[i].second;

@@ -50,9 +50,10 @@ constexpr double kPositionAccept = 1e-6;
 /// Campaign-wide settings of the solves (recorded by the campaign's command line).
 struct Settings {
   /// > 0: the integrand-evaluation budget of each g2, scurve and compound solve (their options'
-  /// max_evaluations) instead of the library's default; a solve that spends it ends
-  /// max_iterations (not usable, no verdict). Bounds the cost of the rare slow solves (a paper
-  /// solver or a fixed-step rk4 on a long curve: seconds each) in a long campaign.
+  /// max_evaluations) instead of the library's default, and of each quadratic position where it
+  /// is below the method's own budget; a call that spends it ends max_iterations (not usable, no
+  /// verdict). Bounds the cost of the rare slow calls (a paper solver or a fixed-step rk4 on a
+  /// long curve, 003's inverse of κ in a position integral: seconds each) in a long campaign.
   long max_evaluations = 0;
 };
 
@@ -788,7 +789,7 @@ inline Record run_eval(Rng& rng) {
 // Positions on a quadratic LA curve (curves/quadratic/quadratic_position.hpp), every method
 // that integrates any integrand.
 
-inline Record run_quadratic(Rng& rng) {
+inline Record run_quadratic(Rng& rng, const Settings& settings) {
   const double alpha = rng.uniform(-5, 5);
   const double gamma = rng.chance(0.1) ? 0.0 : rng.uniform(-2, 2);
   const double lambda = rng.log_uniform(1e-2, 1e1);
@@ -811,7 +812,11 @@ inline Record run_quadratic(Rng& rng) {
     PositionResult p;
     std::visit(
         [&](const auto& method) {
-          if constexpr (QuadratureMethod<std::decay_t<decltype(method)>>) p = position_at(c, s, method);
+          if constexpr (QuadratureMethod<std::decay_t<decltype(method)>>) {
+            const long own = position_budget(method);
+            p = position_at(c, s, method, kDefaultAccept,
+                            settings.max_evaluations > 0 ? std::min(own, settings.max_evaluations) : own);
+          }
         },
         m);
     if (!usable(p.status)) {
@@ -899,7 +904,7 @@ inline Record run_one(const std::string& construction, unsigned long seed, long 
     if (construction == "chain") return run_chain(rng);
     if (construction == "compound") return run_compound(rng, settings);
     if (construction == "eval") return run_eval(rng);
-    if (construction == "quadratic") return run_quadratic(rng);
+    if (construction == "quadratic") return run_quadratic(rng, settings);
     if (construction == "space") return run_space(rng);
   } catch (const InputError&) {
     return {Outcome::input_error, 0, {}, {}, false};
