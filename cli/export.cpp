@@ -1,5 +1,6 @@
 #include "cli/export.hpp"
 
+#include <filesystem>
 #include <type_traits>
 
 #include "cli/batch.hpp"
@@ -65,10 +66,11 @@ Json export_block(const R& r, const std::string& path, ExportFormat format) {
 /// `run` makes and writes the B-spline (export_curve) when there is a curve (`have`).
 template <class Prepare, class Run>
 void add_export_with(Json& report, bool have, const CommonArgs& common, Prepare&& prepare, Run&& run) {
-  if (common.export_path.empty()) return;
+  const std::string file = export_file(common);
+  if (file.empty()) return;
   if (common.export_tol && !(*common.export_tol > 0 && std::isfinite(*common.export_tol)))
     throw_input_error("lac", "export-tol", *common.export_tol, "(0, inf)");
-  const PreparedExport prepared = prepare(ExportRequest{.path = common.export_path,
+  const PreparedExport prepared = prepare(ExportRequest{.path = file,
                                                         .tolerance = common.export_tol.value_or(0.0),
                                                         .degree = common.export_degree,
                                                         .comb = common.comb},
@@ -77,7 +79,12 @@ void add_export_with(Json& report, bool have, const CommonArgs& common, Prepare&
     report["export"] = nullptr;
     return;
   }
-  const std::string path = row_path(common.export_path, current_batch_row());
+  const std::string path = row_path(file, current_batch_row());
+  if (common.export_path.back() == '/') {
+    std::error_code ec;
+    std::filesystem::create_directories(common.export_path, ec);
+    if (ec) throw_input_error("lac", "export", "cannot create the folder '" + common.export_path + "': " + ec.message());
+  }
   const auto r = as_export_error([&] { return run(path, prepared); });
   record_status(r.summary.status);
   report["export"] = export_block(r, path, prepared.format);

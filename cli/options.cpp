@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "lac/common/error.hpp"
 
@@ -48,8 +50,12 @@ void add_common_options(CLI::App& sub, CommonArgs& a, bool planar) {
 void add_export_options(CLI::App& sub, CommonArgs& a) {
   sub.add_option("--export", a.export_path,
                  "Write the curve as a B-spline within a certified distance --export-tol: FILE.step/.stp (STEP), "
-                 ".iges/.igs (IGES entity 126), .dxf (SPLINE), .svg (cubic Bezier path); with --batch one file per "
-                 "row, FILE with _row<N> before the extension");
+                 ".iges/.igs (IGES entity 126), .dxf (SPLINE), .svg (cubic Bezier path); DIR/ (trailing slash; "
+                 "created if missing): DIR/curve.<--export-format>; with --batch one file per row, _row<N> before "
+                 "the extension");
+  sub.add_option("--export-format", a.export_format,
+                 "Format of an --export DIR/: step | stp | iges | igs | dxf | svg (default step); with --export FILE, "
+                 "FILE's own extension");
   sub.add_option("--export-tol", a.export_tol,
                  "Bound on the exported curve's distance from the LA curve, absolute (default 1e-6 x curve length); "
                  "a larger certified bound makes the result inaccurate (exit 3)");
@@ -61,11 +67,37 @@ void add_export_options(CLI::App& sub, CommonArgs& a) {
 int sample_count(const CommonArgs& a) {
   if (a.samples == 1 || a.samples < 0 || a.samples > 1'000'000)
     throw_input_error("lac", "samples", a.samples, "0 or [2, 1000000]");
-  if (a.comb && a.format != "svg" && !ends_with_svg(a.export_path))
+  if (a.comb && a.format != "svg" && !ends_with_svg(export_file(a)))
     throw_input_error("lac", "comb",
                       "--comb draws on an SVG: it needs --format svg (the sampled curve) or --export FILE.svg (the "
                       "B-spline)");
   return a.samples == 0 && a.format == "svg" ? 200 : a.samples;
+}
+
+std::string export_file(const CommonArgs& a) {
+  static const std::vector<std::string> kFormats{"step", "stp", "iges", "igs", "dxf", "svg"};
+  std::string format;
+  if (a.export_format) {
+    format = *a.export_format;
+    std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (std::find(kFormats.begin(), kFormats.end(), format) == kFormats.end())
+      throw_input_error("lac", "export-format", "'" + *a.export_format + "' is not one of step, stp, iges, igs, dxf, svg");
+  }
+  if (a.export_path.empty()) {
+    if (a.export_format) throw_input_error("lac", "export-format", "--export-format needs --export DIR/");
+    return {};
+  }
+  if (a.export_path.back() == '/') return a.export_path + "curve." + (format.empty() ? "step" : format);
+  if (!format.empty()) {
+    const size_t dot = a.export_path.find_last_of('.'), slash = a.export_path.find_last_of('/');
+    std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : a.export_path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != format)
+      throw_input_error("lac", "export-format",
+                        "'" + *a.export_format + "' contradicts the extension of --export '" + a.export_path +
+                            "' (give a folder, DIR/, to name the format apart)");
+  }
+  return a.export_path;
 }
 
 double radians(double value, const CommonArgs& a) { return a.degrees ? value * (std::numbers::pi / 180.0) : value; }

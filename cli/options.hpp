@@ -26,8 +26,12 @@ struct CommonArgs {
   /// --accept: the accept bound relative to the size scale (common/accuracy.hpp); a result whose
   /// achieved error exceeds it is inaccurate (exit 3).
   double accept = kDefaultAccept;
-  /// --export FILE (planar constructions, cli/export.hpp): the curve as a certified B-spline.
+  /// --export FILE (planar constructions, cli/export.hpp): the curve as a certified B-spline;
+  /// --export DIR/ (a trailing slash): DIR/curve.<export_format>, with --batch DIR/curve_row<N>.….
   std::string export_path;
+  /// --export-format: the format of an --export DIR/ (step | stp | iges | igs | dxf | svg; default
+  /// step); with --export FILE it must name FILE's own extension.
+  std::optional<std::string> export_format;
   /// --export-tol: bound on the export's deviation, absolute (default 1e-6 x the curve's length).
   std::optional<double> export_tol;
   /// --export-degree: 5 (G2; the default) or 3 (G1; the only one for .svg, which holds cubic Béziers).
@@ -42,13 +46,18 @@ struct CommonArgs {
 /// when `planar`, --comb.
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
 
-/// Adds --export FILE, --export-tol T and --export-degree D (the planar constructions: cli/export.hpp).
+/// Adds --export FILE|DIR/, --export-format F, --export-tol T and --export-degree D (cli/export.hpp).
 void add_export_options(CLI::App& sub, CommonArgs& a);
 
 /// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError
 /// "samples" unless 0 or in [2, 10^6]; InputError "comb" for --comb without --format svg or
 /// --export FILE.svg.
 int sample_count(const CommonArgs& a);
+
+/// The file --export names for one curve (before batch mode's _row<N>): FILE itself, or
+/// DIR/curve.<format> for --export DIR/. InputError naming export-format for a format that is not
+/// one of the six or that contradicts FILE's extension. Empty without --export.
+std::string export_file(const CommonArgs& a);
 
 /// An angle from the command line in radians (it was given in degrees with --degrees).
 double radians(double value, const CommonArgs& a);

@@ -100,5 +100,31 @@ TEST(CliExport, BatchWritesOneFilePerRow) {
   EXPECT_NE(run.out.find("batch_row2.svg"), std::string::npos);
 }
 
+// --export DIR/ (created if missing): DIR/curve.<--export-format>, one per row in batch mode; a bad
+// row writes nothing and the rows after it are still exported.
+TEST(CliExport, FolderTakesTheFormatOption) {
+  const fs::path dir = temp_dir() / "folder" / "out";
+  fs::remove_all(temp_dir() / "folder");
+  const auto one = test::run_lac_json(kG2 + " --export " + dir.string() + "/");
+  EXPECT_EQ(one["export"]["file"], (dir / "curve.step").string());
+  EXPECT_EQ(one["export"]["format"], "step");
+  EXPECT_TRUE(fs::exists(dir / "curve.step"));
+  const fs::path csv = temp_dir() / "rows3.csv";
+  std::ofstream(csv) << "p0,theta0,kappa0,p1,theta1,kappa1\n"
+                        "\"0,0\",0.6,0.5,\"4,0\",-0.6,-0.3\n"
+                        "\"0,0\",0.3,bad,\"3,1\",0.1,-0.2\n"
+                        "\"0,0\",0.3,0.2,\"3,1\",0.1,-0.2\n";
+  const auto run = test::run_lac("g2 --alpha -0.5 --batch " + csv.string() + " --export " + dir.string() + "/ --export-format DXF");
+  EXPECT_EQ(run.status, 2) << run.out;  // the bad row's status (the batch goes on)
+  EXPECT_TRUE(fs::exists(dir / "curve_row1.dxf"));
+  EXPECT_FALSE(fs::exists(dir / "curve_row2.dxf"));
+  EXPECT_TRUE(fs::exists(dir / "curve_row3.dxf"));
+  const auto bad = test::run_lac(kG2 + " --export " + dir.string() + "/ --export-format stl");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("export-format"), std::string::npos) << bad.out;
+  EXPECT_EQ(test::run_lac(kG2 + " --export " + (dir / "c.dxf").string() + " --export-format svg").status, 2);
+  EXPECT_EQ(test::run_lac(kG2 + " --export-format svg").status, 2);
+}
+
 }  // namespace
 }  // namespace lac
