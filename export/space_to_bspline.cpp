@@ -97,9 +97,10 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   const SpacePlacement& pl = curve.placement();
   const double sigma = pl.scale;
   const double extent = pl.origin.norm() + length;
-  // 9/10 of the tolerance for the interpolation, the rest for the end data and rounding; no finer
-  // than the rounding of the coordinates.
-  const double target = std::max(0.9 * tol, 64 * DBL_EPSILON * extent) / sigma;  // standard-form units
+  // 9/10 of the tolerance for the interpolation (1/10 when knots are removed afterwards: the rest is
+  // theirs), the rest for the end data and rounding; no finer than the rounding of the coordinates.
+  // In standard-form units.
+  const double target = std::max((options.remove_knots ? 0.1 : 0.9) * tol, 64 * DBL_EPSILON * extent) / sigma;
   auto fail = [&](Status status, std::string message) {
     r.conclude(status, std::move(message));
     r.summary.seconds = seconds_since(t_start);
@@ -195,8 +196,10 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   for (Piece& pc : pieces)
     for (Vec3& x : pc) x = to_user(x);
   knots.back() = length;
+  std::vector<double> joints;  // the knots where one piece ends and the next begins
+  for (size_t k = 1; k < cps.size(); ++k) joints.push_back(curve.piece_start(k));
   detail::finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "deviation bound", t_start,
-                                [](const BSpline3&, SpaceExportInfo&) {});
+                                [](const BSpline3&, SpaceExportInfo&) {}, options.remove_knots, joints);
   return r;
 }
 

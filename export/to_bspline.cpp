@@ -129,8 +129,10 @@ bool curvature_monotone(const BSpline& b, const std::vector<MonotoneStretch>& st
   return good + constant == static_cast<long>(stretches.size());
 }
 
-ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
-                               double extent, const ExportOptions& options, const CurvatureCheck& check) {
+namespace {
+
+ExportResult certified_bspline_once(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
+                                    double extent, const ExportOptions& options, const CurvatureCheck& check) {
   const auto t_start = std::chrono::steady_clock::now();
   const int p = options.degree;
   ExportResult r;
@@ -138,9 +140,10 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
   const double tol = options.tolerance > 0 ? options.tolerance : kDefaultExportTolerance * length;
   r.info.tolerance = tol;
   r.summary.accept = tol / length;
-  // 9/10 of the tolerance for the interpolation, the rest for positions and rounding; no finer
-  // than the rounding of the coordinates (a tolerance below it ends inaccurate without a flood of spans).
-  const double target = std::max(0.9 * tol, 64 * DBL_EPSILON * extent);
+  // 9/10 of the tolerance for the interpolation (1/10 when knots are removed afterwards: the rest is
+  // theirs), the rest for positions and rounding; no finer than the rounding of the coordinates (a
+  // tolerance below it ends inaccurate without a flood of spans).
+  const double target = std::max((options.remove_knots ? 0.1 : 0.9) * tol, 64 * DBL_EPSILON * extent);
   auto fail = [&](Status status, std::string message) {
     r.conclude(status, std::move(message));
     r.summary.seconds = seconds_since(t_start);
@@ -257,7 +260,27 @@ ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, cons
   finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "certified deviation", t_start,
                         [&](const BSpline& b, ExportInfo& info) {
                           if (check) check(b, info);
-                        });
+                        },
+                        options.remove_knots, std::vector<double>(starts.begin() + 1, starts.end() - 1));
+  return r;
+}
+
+}  // namespace
+
+ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
+                               double extent, const ExportOptions& options, const CurvatureCheck& check) {
+  ExportResult r = certified_bspline_once(parts, starts, extent, options, check);
+  // Knot removal can lose the monotone curvature of the Hermite spans (a C4 quintic cannot follow
+  // a curvature that changes fast): then the Hermite B-spline at the full tolerance, if it keeps it.
+  if (!options.remove_knots || !r.usable() || r.info.curvature_monotone) return r;
+  ExportOptions hermite = options;
+  hermite.remove_knots = false;
+  ExportResult h = certified_bspline_once(parts, starts, extent, hermite, check);
+  if (h.usable() && h.info.curvature_monotone) {
+    h.summary.evaluations += r.summary.evaluations;
+    h.summary.seconds += r.summary.seconds;
+    return h;
+  }
   return r;
 }
 

@@ -47,6 +47,12 @@ struct ExportOptions {
   /// 5: quintic Hermite spans (c, c', c'' at the ends), C2 in arc length inside each LA segment and
   /// at G2 joints, so the curvature is continuous (G2); 3: cubic Hermite spans, C1 (G1).
   int degree = 5;
+  /// Remove knots inside each LA segment within the tolerance (export/detail/hermite_bound.hpp,
+  /// remove_knots_within): the Hermite spans are then built to 1/10 of the tolerance and the knots
+  /// they do not need are removed with a certified bound, leaving a smoother B-spline (C4 for the
+  /// quintic, C2 for the cubic, at the remaining interior knots) with fewer control points. The
+  /// joints between segments stay knots of their multiplicity. false: the Hermite spans' knots.
+  bool remove_knots = true;
 };
 
 struct ExportInfo {

@@ -224,37 +224,140 @@ void assemble_hermite_bspline(const std::vector<std::vector<P>>& pieces, const s
 /// rounding) and their sum, the certified deviation.
 struct HermiteBounds {
   double interpolation = 0, positions = 0, deviation = 0;
+  std::vector<double> span_deviation;  ///< interp + pos of each span, in order
   void add_span(double interp, double pos) {
     interpolation = std::max(interpolation, interp);
     positions = std::max(positions, pos);
     deviation = std::max(deviation, interp + pos);
+    span_deviation.push_back(interp + pos);
   }
 };
 
-/// The end of every to_bspline: r.curve (degree p) assembled from the pieces, ExportInfo's span
-/// count, continuity and bounds, check(r.curve, r.info), the summary, and the status: ok when the
-/// deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds the tolerance <tol>").
+inline double point_distance(const std::complex<double>& a, const std::complex<double>& b) { return std::abs(a - b); }
+template <class V>
+double point_distance(const V& a, const V& b) {
+  return (a - b).norm();
+}
+
+/// Knot removal within a certified bound (Tiller's algorithm, The NURBS Book A5.8, one occurrence
+/// at a time). Removing one occurrence of u (multiplicity s) solves for the new control points
+/// from both sides; the bound of that step is exact, not Tiller's estimate: u is inserted again
+/// into the new curve (Boehm), which gives it the old knot vector, and two B-splines on one knot
+/// vector differ by at most the largest distance of their control points (the basis is a
+/// nonnegative partition of unity), wherever the changed basis functions are nonzero,
+/// [U[first], U[last + p + 1]]. Each Hermite span j (parameter [span_knots[j], span_knots[j+1]])
+/// carries its bound `deviation[j]`; a removal is kept when every span it touches stays within
+/// `tol` with the step's bound (and rounding) added, which the span then carries (triangle
+/// inequality). Knots at the values `fixed` (joints of the curve's segments) are kept. Passes
+/// over the interior knots, one occurrence of each per pass, until a pass removes nothing.
+/// Returns the largest deviation after the removals.
+template <class P>
+double remove_knots_within(int p, std::vector<double>& U, std::vector<P>& pts, const std::vector<double>& span_knots,
+                           std::vector<double> deviation, const std::vector<double>& fixed, double tol) {
+  auto is_fixed = [&](double u) { return std::binary_search(fixed.begin(), fixed.end(), u); };
+  auto spans_of = [&](double a, double b) {
+    const auto lo = std::lower_bound(span_knots.begin(), span_knots.end(), a);
+    const auto hi = std::upper_bound(span_knots.begin(), span_knots.end(), b);
+    const size_t j0 = static_cast<size_t>(lo - span_knots.begin());
+    size_t j1 = static_cast<size_t>(hi - span_knots.begin());  // pieces j0 … j1 − 2 lie in [a, b]
+    j1 = j1 >= 1 ? j1 - 1 : 0;
+    return std::pair{j0, std::min(j1, deviation.size())};
+  };
+  std::vector<P> temp, q;
+  for (int pass = 0; pass <= 2 * p + 2; ++pass) {
+    bool removed = false;
+    for (size_t r = static_cast<size_t>(p) + 1; r + static_cast<size_t>(p) + 1 < U.size();) {
+      const double u = U[r];
+      size_t rl = r;  // the last occurrence of u
+      while (rl + 1 + static_cast<size_t>(p) + 1 < U.size() && U[rl + 1] == u) ++rl;
+      const int s = static_cast<int>(rl - r) + 1;
+      if (is_fixed(u) || s > p - 1) {
+        r = rl + 1;
+        continue;
+      }
+      const size_t first = rl - p, last = rl - s, off = first - 1;
+      temp.assign(last + 2 - off, P{});
+      temp[0] = pts[off];
+      temp[last + 1 - off] = pts[last + 1];
+      size_t i = first, j = last, ii = 1, jj = last - off;
+      while (j > i) {
+        const double ai = (u - U[i]) / (U[i + p + 1] - U[i]);
+        const double aj = (u - U[j]) / (U[j + p + 1] - U[j]);
+        temp[ii] = (pts[i] - (1 - ai) * temp[ii - 1]) / ai;
+        temp[jj] = (pts[j] - aj * temp[jj + 1]) / (1 - aj);
+        ++i, ++ii, --j, --jj;
+      }
+      // The candidate: the left half from the left, the right half from the right, one point fewer.
+      q.assign(pts.begin(), pts.end());
+      for (i = first, j = last; j > i; ++i, --j) {
+        q[i] = temp[i - off];
+        q[j] = temp[j - off];
+      }
+      const size_t fout = (2 * rl - static_cast<size_t>(s) - static_cast<size_t>(p)) / 2;
+      q.erase(q.begin() + static_cast<std::ptrdiff_t>(fout));
+      // Its distance from the old curve: u inserted again (knot vector U without U[rl]).
+      auto u_new = [&](size_t k) { return k < rl ? U[k] : U[k + 1]; };
+      double e = 0, size = 0;
+      bool finite = true;
+      for (size_t k = first; k <= last; ++k) {
+        const double a = (u - u_new(k)) / (u_new(k + p) - u_new(k));
+        const P back = a * q[k] + (1 - a) * q[k - 1];
+        e = std::max(e, point_distance(back, pts[k]));
+        size = std::max(size, point_distance(pts[k], P{}) + point_distance(q[k], P{}));
+        finite = finite && std::isfinite(e);
+      }
+      const double step = e + 64 * DBL_EPSILON * size;  // rounding of the solve and the insertion
+      const auto [j0, j1] = spans_of(U[first], U[last + p + 1]);
+      double worst = 0;
+      for (size_t k = j0; k < j1; ++k) worst = std::max(worst, deviation[k]);
+      if (!finite || j0 >= j1 || !(worst + step <= tol)) {
+        r = rl + 1;
+        continue;
+      }
+      for (size_t k = j0; k < j1; ++k) deviation[k] += step;
+      pts.swap(q);
+      U.erase(U.begin() + static_cast<std::ptrdiff_t>(rl));
+      removed = true;
+      r = rl;  // the next distinct knot
+    }
+    if (!removed) break;
+  }
+  return deviation.empty() ? 0.0 : *std::max_element(deviation.begin(), deviation.end());
+}
+
+/// The end of every to_bspline: r.curve (degree p) assembled from the pieces; with `reduce`, its
+/// knots removed within `tol` (remove_knots_within; the knots at `fixed`, the joints, kept); ExportInfo's span
+/// count (non-empty knot spans), continuity and bounds, check(r.curve, r.info), the summary, and
+/// the status: ok when the deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds
+/// the tolerance <tol>").
 template <class R, class P, class Check>
 void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& pieces, const std::vector<int>& junction,
                            const std::vector<double>& knots, bool g2, const HermiteBounds& bounds, double tol,
                            double length, const char* what, std::chrono::steady_clock::time_point t_start,
-                           const Check& check) {
+                           const Check& check, bool reduce = false, const std::vector<double>& fixed = {}) {
   r.curve.degree = p;
   assemble_hermite_bspline(pieces, junction, knots, p, r.curve.knots, r.curve.control_points);
   r.info.continuity = g2 ? "G2" : "G1";
-  r.info.spans = static_cast<long>(pieces.size());
   r.info.interpolation = bounds.interpolation;
   r.info.positions = bounds.positions;
-  r.info.max_deviation = bounds.deviation;
+  double deviation = bounds.deviation;
   check(r.curve, r.info);
-  r.summary.error = bounds.deviation / length;
-  r.summary.error_estimate = bounds.deviation;
+  if (reduce && deviation <= tol) {
+    deviation = remove_knots_within(p, r.curve.knots, r.curve.control_points, knots, bounds.span_deviation, fixed, tol);
+    check(r.curve, r.info);
+  }
+  r.info.max_deviation = deviation;
+  r.info.spans = 0;
+  for (size_t i = static_cast<size_t>(p); i + static_cast<size_t>(p) + 1 < r.curve.knots.size(); ++i)
+    if (r.curve.knots[i + 1] > r.curve.knots[i]) ++r.info.spans;
+  r.summary.error = deviation / length;
+  r.summary.error_estimate = deviation;
   r.summary.iterations = static_cast<int>(std::min<long>(r.info.spans, std::numeric_limits<int>::max()));
   r.summary.seconds = seconds_since(t_start);
-  if (bounds.deviation <= tol) {
+  if (deviation <= tol) {
     r.conclude(Status::ok, "");
   } else {
-    r.conclude(Status::inaccurate, std::string(what) + " " + format_number(bounds.deviation) +
+    r.conclude(Status::inaccurate, std::string(what) + " " + format_number(deviation) +
                                        " exceeds the tolerance " + format_number(tol));
   }
 }
@@ -305,6 +408,8 @@ using CurvatureCheck = std::function<void(const BSpline&, ExportInfo&)>;
 /// parts meet at the next part's start point and tangent (and its curvature when they agree, G2),
 /// the gap entering the bound. `extent`: the size of the coordinates (for rounding). Everything
 /// of ExportInfo but the curvature check (`check`) is filled in; options are validated by the caller.
+/// With options.remove_knots, a result whose curvature is not monotone is replaced by the Hermite
+/// spans' B-spline (remove_knots false) when that one's is.
 ExportResult certified_bspline(const std::vector<const SpanSource*>& parts, const std::vector<double>& starts,
                                double extent, const ExportOptions& options, const CurvatureCheck& check);
 

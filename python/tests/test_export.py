@@ -41,6 +41,10 @@ def test_bspline_within_its_certified_bound(curve, degree):
     got = np.array([de_boor(knots, cp, degree, t) for t in s])
     dist = np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y)
     assert dist.max() <= b["max_deviation"]
+    # remove_knots=False: the Hermite spans' B-spline, more control points, the same bound's meaning.
+    h = lac.to_bspline(curve, tolerance=1e-6, degree=degree, remove_knots=False)
+    assert h["usable"] and len(h["control_points"]) > len(cp)
+    assert len(h["control_points"]) == (3 if degree == 5 else 2) * h["spans"] + (3 if degree == 5 else 2)
 
 
 def test_tolerance_beyond_reach_is_inaccurate(curve):

@@ -52,7 +52,9 @@ TEST(CliSpaceExport, G1AndCompoundEveryFormat) {
       EXPECT_DOUBLE_EQ(e["tolerance"].get<double>(), 1e-6 * j["length"].get<double>());
       EXPECT_GT(e["max_deviation"].get<double>(), 0);
       EXPECT_LE(e["max_deviation"].get<double>(), e["tolerance"].get<double>());
-      EXPECT_EQ(e["control_points"].get<long>(), 3 * e["spans"].get<long>() + 3);
+      // N spans of degree 5: N + 5 points with simple knots, 3N + 3 with the Hermite spans' triple ones.
+      EXPECT_GE(e["control_points"].get<long>(), e["spans"].get<long>() + 5);
+      EXPECT_LE(e["control_points"].get<long>(), 3 * e["spans"].get<long>() + 3);
       EXPECT_TRUE(e["curvature_monotone"].is_null());
       EXPECT_TRUE(e["max_curvature_jump"].is_null());
       EXPECT_GT(fs::file_size(f), 100u) << f;
@@ -66,7 +68,8 @@ TEST(CliSpaceExport, CubicAndTolerance) {
   EXPECT_EQ(j["export"]["continuity"], "G1");
   EXPECT_EQ(j["export"]["tolerance"], 1e-8);
   EXPECT_LE(j["export"]["max_deviation"].get<double>(), 1e-8);
-  EXPECT_EQ(j["export"]["control_points"].get<long>(), 2 * j["export"]["spans"].get<long>() + 2);
+  EXPECT_GE(j["export"]["control_points"].get<long>(), j["export"]["spans"].get<long>() + 3);
+  EXPECT_LE(j["export"]["control_points"].get<long>(), 2 * j["export"]["spans"].get<long>() + 2);
 }
 
 TEST(CliSpaceExport, BoundAboveToleranceIsInaccurate) {

@@ -139,8 +139,15 @@ TEST(QuadraticExport, StructureAndContinuity) {
   const QuadraticLaCurve c(-1.0, -0.3, 1.0);
   const Interval range = c.default_range();
   for (int degree : {3, 5}) {
-    const ExportResult r = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-7, .degree = degree});
+    const ExportResult r = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-7, .degree = degree, .remove_knots = false});
     ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
+    // Knot removal (the default): fewer control points within the same tolerance, the curvature
+    // still monotone.
+    const ExportResult reduced = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-7, .degree = degree});
+    ASSERT_EQ(reduced.summary.status, Status::ok) << reduced.summary.message;
+    EXPECT_LT(reduced.curve.control_points.size(), r.curve.control_points.size());
+    EXPECT_LE(reduced.info.max_deviation, 1e-7);
+    if (degree == 5) EXPECT_TRUE(reduced.info.curvature_monotone);
     r.curve.validate();
     EXPECT_EQ(r.curve.degree, degree);
     EXPECT_EQ(r.curve.control_points.size(), static_cast<size_t>(degree == 3 ? 2 * r.info.spans + 2 : 3 * r.info.spans + 3));
@@ -152,7 +159,7 @@ TEST(QuadraticExport, StructureAndContinuity) {
     EXPECT_LT(std::abs(r.curve.point_at(0) - e0.position), 1e-12);
     EXPECT_LT(std::abs(r.curve.point_at(range.hi - range.lo) - e1.position), 1e-12);
     // A tighter tolerance takes more spans; a tolerance below the rounding of the coordinates is inaccurate.
-    const ExportResult fine = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-10, .degree = degree});
+    const ExportResult fine = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-10, .degree = degree, .remove_knots = false});
     EXPECT_GT(fine.info.spans, r.info.spans);
     const ExportResult tiny = to_bspline(c, range.lo, range.hi, {.tolerance = 1e-17, .degree = degree});
     EXPECT_EQ(tiny.summary.status, Status::inaccurate);

@@ -6,6 +6,8 @@
 // comparison is at equal s.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -126,9 +128,19 @@ TEST(SpaceExport, TighterToleranceMoreSpansAndTheQuinticIsG2) {
   ASSERT_TRUE(tight.usable()) << tight.summary.message;
   EXPECT_GT(tight.info.spans, q.info.spans);
   EXPECT_LE(tight.info.max_deviation, 1e-9 * c.length());
-  // Quintic: 3N + 3 control points (triple knots) for N spans; cubic 2N + 2.
-  EXPECT_EQ(q.curve.control_points.size(), static_cast<size_t>(3 * q.info.spans + 3));
-  EXPECT_EQ(cu.curve.control_points.size(), static_cast<size_t>(2 * cu.info.spans + 2));
+  // The Hermite spans: quintic 3N + 3 control points (triple knots) for N spans, cubic 2N + 2;
+  // knot removal (the default) keeps the joints and needs fewer, within the tolerance.
+  for (int degree : {3, 5}) {
+    const auto h = to_bspline(c, {.degree = degree, .remove_knots = false});
+    ASSERT_TRUE(h.usable()) << h.summary.message;
+    EXPECT_EQ(h.curve.control_points.size(), static_cast<size_t>(degree == 5 ? 3 * h.info.spans + 3 : 2 * h.info.spans + 2));
+    const auto& reduced = acceptance(degree);
+    EXPECT_LT(reduced.curve.control_points.size(), h.curve.control_points.size()) << "degree " << degree;
+    EXPECT_LE(reduced.info.max_deviation, reduced.info.tolerance);
+    for (size_t k = 1; k < c.pieces().size(); ++k)
+      EXPECT_NE(std::find(reduced.curve.knots.begin(), reduced.curve.knots.end(), c.piece_start(k)), reduced.curve.knots.end())
+          << "joint " << k;
+  }
   EXPECT_EQ(q.curve.knots.front(), 0.0);
   EXPECT_EQ(q.curve.knots.back(), c.length());
 }

@@ -33,7 +33,7 @@ double measured_deviation(const PlanarCurve& c, const BSpline& b, int per_span) 
     int best = 0;
     double best_v = -1;
     for (int i = 0; i <= per_span; ++i) {
-      const double v = gap(c, b, a + h * i / per_span);
+      const double v = gap(c, b, std::min(knots[j + 1], a + h * i / per_span));
       if (v > best_v) best_v = v, best = i;
     }
     double lo = a + h * std::max(0, best - 1) / per_span, hi = a + h * std::min(per_span, best + 1) / per_span;
@@ -55,7 +55,7 @@ PlanarCurve acceptance_curve() {  // lac g2 --p0 0,0 --theta0 0.6 --kappa0 0.5 -
 
 void check_structure(int degree) {
   const PlanarCurve c = acceptance_curve();
-  const ExportResult r = to_bspline(c, {.tolerance = 1e-6, .degree = degree});
+  const ExportResult r = to_bspline(c, {.tolerance = 1e-6, .degree = degree, .remove_knots = false});
   ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
   const BSpline& b = r.curve;
   b.validate();
@@ -95,6 +95,43 @@ void check_structure(int degree) {
 
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveCubic) { check_structure(3); }
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveQuintic) { check_structure(5); }
+
+// Knot removal (the default): fewer control points than the Hermite spans at the same tolerance,
+// the joints kept with their multiplicity, the knots inside the segments simple where removed;
+// the bound certified (measured ≤ bound ≤ tolerance) and the quintic's curvature still monotone
+// and continuous.
+TEST(ToBspline, KnotRemovalKeepsTheJointsAndTheBound) {
+  const PlanarCurve c = acceptance_curve();
+  for (int degree : {3, 5})
+    for (double tol : {1e-3, 1e-6, 1e-9}) {
+      const ExportResult h = to_bspline(c, {.tolerance = tol, .degree = degree, .remove_knots = false});
+      const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = degree});
+      ASSERT_TRUE(h.usable() && r.usable()) << r.summary.message;
+      r.curve.validate();
+      EXPECT_LT(r.curve.control_points.size(), h.curve.control_points.size()) << "degree " << degree << " tol " << tol;
+      EXPECT_LE(r.info.max_deviation, tol);
+      EXPECT_LE(measured_deviation(c, r.curve, 24), r.info.max_deviation) << "degree " << degree << " tol " << tol;
+      std::vector<double> k, kh;
+      std::vector<int> m, mh;
+      r.curve.distinct_knots(k, m);
+      h.curve.distinct_knots(kh, mh);
+      for (size_t j = 1; j < c.segments().size(); ++j) {
+        const auto it = std::find(k.begin(), k.end(), c.segment_start(j));
+        const auto ith = std::find(kh.begin(), kh.end(), c.segment_start(j));
+        ASSERT_NE(it, k.end()) << "joint " << j;
+        EXPECT_EQ(m[it - k.begin()], mh[ith - kh.begin()]) << "joint " << j;
+      }
+      int simple = 0;
+      for (size_t i = 1; i + 1 < m.size(); ++i) simple += m[i] == 1;
+      EXPECT_GT(simple, 0) << "degree " << degree << " tol " << tol;
+      if (degree == 5) {
+        EXPECT_TRUE(r.info.curvature_monotone);
+        EXPECT_LE(r.info.max_curvature_jump, 1e-9);
+      }
+      std::printf("degree %d tol %g: %zu control points (Hermite spans %zu), bound %.3g\n", degree, tol,
+                  r.curve.control_points.size(), h.curve.control_points.size(), r.info.max_deviation);
+    }
+}
 
 TEST(ToBspline, DefaultToleranceIsRelativeToLength) {
   const PlanarCurve c = acceptance_curve();
@@ -166,7 +203,7 @@ TEST(ToBspline, QuinticAtG1JointsIsC1) {
   const ChainResult ch = solve_chain({.points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}}, .alpha = -1});
   ASSERT_TRUE(ch.usable());
   const PlanarCurve& c = ch.curve;
-  const ExportResult r = to_bspline(c, {.tolerance = 1e-7});
+  const ExportResult r = to_bspline(c, {.tolerance = 1e-7, .remove_knots = false});
   ASSERT_TRUE(r.usable()) << r.summary.message;
   EXPECT_EQ(r.info.continuity, "G1");
   std::vector<double> k;
