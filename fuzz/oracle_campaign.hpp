@@ -646,7 +646,10 @@ inline Record run_chain(Rng& rng) {
     if (k >= 0 && static_cast<size_t>(k) < pairs && res.info.thetas.size() == p.points.size()) {
       const size_t a = static_cast<size_t>(k), b = (a + 1) % p.points.size();
       if (!g2) {
-        proven = g1_no_curve_proven({p.points[a], p.points[b], res.info.thetas[a], res.info.thetas[b], p.alpha, 0}, 0);
+        // The failed pair is a G1 Hermite problem: its no_solution is checked as the g1 campaign
+        // checks one, over the scope its message states (the certified scan included).
+        const G1Data d{p.points[a], p.points[b], res.info.thetas[a], res.info.thetas[b], p.alpha, 0};
+        return g1_check_no_solution(d, res.summary.message, input + " | failed pair " + std::to_string(k));
       } else if (res.info.kappas.size() == p.points.size()) {
         proven = g2_no_curve_proven({{p.points[a], res.info.thetas[a], res.info.kappas[a]},
                                      {p.points[b], res.info.thetas[b], res.info.kappas[b]}, p.alpha});
