@@ -62,9 +62,10 @@ struct ExportInfo {
   double positions = 0;        ///< the largest end-position term (quadrature estimates, joint gaps)
   long spans = 0;
   /// Whether the B-spline's curvature is monotone, in the LA curvature's direction, on every LA
-  /// segment whose curvature changes (by more than 1e-9 of its scale); checked at 33 points per
-  /// span and across the knots inside the segment (1e-9 relative slack for rounding). A segment
-  /// of constant curvature (an arc) is not checked: no polynomial has constant curvature.
+  /// segment whose curvature changes (by more than 1e-9 of its scale): proven, with a slack of
+  /// 1e-9 of the curvature's scale for rounding, inside each span from the Bernstein coefficients
+  /// of the numerator of dκ/dt (subdivided where needed) and across the knots inside the segment.
+  /// A segment of constant curvature (an arc) is not checked: no polynomial has constant curvature.
   bool curvature_monotone = false;
   long monotone_segments = 0;            ///< LA segments on which it is
   long constant_curvature_segments = 0;  ///< arcs, not checked
