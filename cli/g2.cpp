@@ -19,6 +19,7 @@ struct G2Args {
   bool paper_joints = false;
   std::optional<int> winding;
   std::optional<double> max_turning;
+  std::optional<double> max_evaluations;
 };
 
 Report solve(const G2Args& a) {
@@ -34,6 +35,7 @@ Report solve(const G2Args& a) {
   o.free_joints = !a.paper_joints;
   o.winding = a.winding;
   if (a.max_turning) o.max_turning = *a.max_turning;
+  if (a.max_evaluations) o.max_evaluations = max_evaluations_option(a.max_evaluations, 1e12);
   o.accept = a.common.accept;
   const int n = sample_count(a.common);
   const G2Result res = solve_g2(pr, o);
@@ -78,6 +80,9 @@ void setup(CLI::App& app) {
                   "k in [-100, 100]; default: every turning up to --max-turning, least first");
   sub->add_option("--max-turning", a->max_turning,
                   "Largest total turning (rad) searched without --winding, [pi, 200 pi] (default 4 pi)");
+  sub->add_option("--max-evaluations", a->max_evaluations,
+                  "Integrand evaluations of the whole call (starts, solves, fallback), in [1, 1e12] (default 1e8; "
+                  "then status max_iterations)");
   add_common_options(*sub, a->common, true);
   add_export_options(*sub, a->common);
   set_solver(*sub, *a, solve);

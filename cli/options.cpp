@@ -74,6 +74,12 @@ int sample_count(const CommonArgs& a) {
   return a.samples == 0 && a.format == "svg" ? 200 : a.samples;
 }
 
+long max_evaluations_option(const std::optional<double>& value, double max) {
+  if (!value) return 0;
+  if (!(*value >= 1 && *value <= max)) throw_input_error("lac", "max-evaluations", *value, "[1, " + format_number(max) + "]");
+  return static_cast<long>(*value);
+}
+
 std::string export_file(const CommonArgs& a) {
   static const std::vector<std::string> kFormats{"step", "stp", "iges", "igs", "dxf", "svg"};
   std::string format;

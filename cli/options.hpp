@@ -54,6 +54,10 @@ void add_export_options(CLI::App& sub, CommonArgs& a);
 /// --export FILE.svg.
 int sample_count(const CommonArgs& a);
 
+/// --max-evaluations N: N as a count, 0 when not given; InputError naming max-evaluations unless
+/// N ∈ [1, max].
+long max_evaluations_option(const std::optional<double>& value, double max);
+
 /// The file --export names for one curve (before batch mode's _row<N>): FILE itself, or
 /// DIR/curve.<format> for --export DIR/. InputError naming export-format for a format that is not
 /// one of the six or that contradicts FILE's extension. Empty without --export.

@@ -33,12 +33,7 @@ Report solve(const QuadraticArgs& a) {
   const double s1 = a.s_to.value_or(range.hi);
   curve.check_s(s0, "s-from");
   curve.check_s(s1, "s-to");
-  long max_evaluations = 0;
-  if (a.max_evaluations) {
-    const double m = *a.max_evaluations;
-    if (!(m >= 1 && m <= 1e10)) throw_input_error("lac quadratic", "max-evaluations", m, "[1, 1e10]");
-    max_evaluations = static_cast<long>(m);
-  }
+  const long max_evaluations = max_evaluations_option(a.max_evaluations, 1e10);
   const double accept = a.common.accept;
   const AnyQuadrature method = make_quadrature(a.quadrature.integrator, a.quadrature.options());
   const int n = sample_count(a.common);

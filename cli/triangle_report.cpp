@@ -18,11 +18,7 @@ PreparedTriangle prepare_triangle(const TriangleArgs& a) {
   PreparedTriangle s{{{p[0][0], p[0][1]}, {p[1][0], p[1][1]}, {p[2][0], p[2][1]}}, {}, false};
   s.options.solver = parse_root_method(a.solver);
   s.options.accept = a.common.accept;
-  if (a.max_evaluations) {
-    const double m = *a.max_evaluations;
-    if (!(m >= 1 && m <= 1e12)) throw_input_error("lac", "max-evaluations", m, "[1, 1e12]");
-    s.options.max_evaluations = static_cast<long>(m);
-  }
+  if (a.max_evaluations) s.options.max_evaluations = max_evaluations_option(a.max_evaluations, 1e12);
   if (a.quadrature.integrator != "auto") {
     s.options.integrator = make_quadrature(a.quadrature.integrator, a.quadrature.options());
     s.explicit_integrator = true;

@@ -191,5 +191,17 @@ TEST(CliExitStatus, ThreeForAnInaccurateResult) {
   EXPECT_NE(loose.out.find("\"status\": \"tolerance_not_met\""), std::string::npos) << loose.out;
 }
 
+// --max-evaluations of g2 (the whole call's integrand evaluations): spent, exit 3 with status
+// max_iterations; out of [1, 1e12], exit 2 naming it.
+TEST(CliExitStatus, G2EvaluationBudget) {
+  const test::CliRun spent = run_lac_stdout(kG2 + "--alpha -0.5 --max-evaluations 50");
+  EXPECT_EQ(spent.status, 3) << spent.out;
+  EXPECT_NE(spent.out.find("\"status\": \"max_iterations\""), std::string::npos) << spent.out;
+  const test::CliRun bad = run_lac_stderr(kG2 + "--alpha -0.5 --max-evaluations 0");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("max-evaluations"), std::string::npos) << bad.out;
+  EXPECT_EQ(run_lac_stdout(kG2 + "--alpha -0.5 --max-evaluations 1e6").status, 0);
+}
+
 }  // namespace
 }  // namespace lac
