@@ -175,6 +175,28 @@ void write_long_summary(const std::filesystem::path& out, const std::vector<std:
   }
 }
 
+/// What the campaign's tables mean (the description of every table it writes).
+std::string campaign_description() {
+  return
+      "Random problems per construction (generators in fuzz/oracle_campaign.hpp; problem i has its own seed), each "
+      "result checked end to end by an independent computation in long double (fuzz/oracle_check.hpp: the linear-q "
+      "law written afresh, Boost Gauss–Kronrod on pieces of at most 1.5 rad, in log|q| near steep ends; Boost.Odeint "
+      "RKF78 for the quadratic curve). A usable result is *wrong* when a condition misses by more than its accept bound "
+      "(summary.accept relative to the chord for constructions; 1e-6 of the arc length for eval and quadratic "
+      "positions): end points, end tangents, end curvatures (G2), joints (position, tangent; curvature for G2; dκ/ds "
+      "for compound), each segment's α, the total turning with its winding (g1, compound) and the turning share r "
+      "(compound). `silent_wrong`: the wrong results whose own reported error (summary.error, or a position's "
+      "error estimate) was within accept too, or unset: nothing in the result tells that it is wrong. A no_solution is *false* when the proof's condition (recomputed) does not hold for every winding of "
+      "the scope its message states, or when the solver itself verifies a curve inside that scope "
+      "(docs/robustness.md). `unverified`: usable results the oracle could not evaluate (no verdict); "
+      "`no_curve_by_scan`: G1 no_solution resting at some winding on the solver's certified scan of the "
+      "alpha >= 0 shapes (docs/g1_hermite.md), which the oracle does not re-derive; each was tried by the auto, "
+      "toms748 and bisection solvers at that winding and none verified a curve (its claim is tested against "
+      "tanh-sinh end points by G1Hermite.SearchUpToMaxTurningStatesItsScope); "
+      "`curve_at_other_winding`: no_solution whose data have a verified curve at a winding in −2…2 outside the "
+      "message's scope (information, not a failure). Both `wrong_but_usable` and `false_no_curve` must be 0.";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,6 +227,9 @@ int main(int argc, char** argv) {
                "write results/oracle_long_<construction>.md per construction and the summary "
                "results/robustness_oracle_long.md (instead of the main job's robustness_oracle.md)");
   app.add_option("--revision", revision, "code revision the binary was built from, recorded in each --long row");
+  bool summary_only = false;
+  app.add_flag("--long-summary", summary_only,
+               "only rewrite <out>/robustness_oracle_long.md from the slices in --out (no problem is run)");
   oracle::Settings settings;
   app.add_option("--max-evaluations", settings.max_evaluations,
                  "integrand-evaluation budget of each g2, scurve and compound solve and (where lower than "
@@ -227,6 +252,13 @@ int main(int argc, char** argv) {
                "worst_error_over_accept"};
   full.columns = t.columns;
   for (const char* c : {"seconds", "problems_per_second", "us_per_problem_per_thread"}) full.columns.emplace_back(c);
+  if (summary_only) {
+    io::Table header;
+    header.columns = t.columns;
+    header.columns.insert(header.columns.begin() + 1, {"revision", "seed", "first"});
+    write_long_summary(out, header.columns, header.markdown(), campaign_description());
+    return 0;
+  }
   std::string findings;
   std::vector<std::pair<std::string, std::string>> findings_of;  // construction, its findings
   bool bad = false;
@@ -275,24 +307,7 @@ int main(int argc, char** argv) {
   io::ResultDoc doc;
   doc.title = "Robustness: oracle campaign";
   doc.command = io::command_line(argc, argv);
-  doc.description =
-      "Random problems per construction (generators in fuzz/oracle_campaign.hpp; problem i has its own seed), each "
-      "result checked end to end by an independent computation in long double (fuzz/oracle_check.hpp: the linear-q "
-      "law written afresh, Boost Gauss–Kronrod on pieces of at most 1.5 rad, in log|q| near steep ends; Boost.Odeint "
-      "RKF78 for the quadratic curve). A usable result is *wrong* when a condition misses by more than its accept bound "
-      "(summary.accept relative to the chord for constructions; 1e-6 of the arc length for eval and quadratic "
-      "positions): end points, end tangents, end curvatures (G2), joints (position, tangent; curvature for G2; dκ/ds "
-      "for compound), each segment's α, the total turning with its winding (g1, compound) and the turning share r "
-      "(compound). `silent_wrong`: the wrong results whose own reported error (summary.error, or a position's "
-      "error estimate) was within accept too, or unset: nothing in the result tells that it is wrong. A no_solution is *false* when the proof's condition (recomputed) does not hold for every winding of "
-      "the scope its message states, or when the solver itself verifies a curve inside that scope "
-      "(docs/robustness.md). `unverified`: usable results the oracle could not evaluate (no verdict); "
-      "`no_curve_by_scan`: G1 no_solution resting at some winding on the solver's certified scan of the "
-      "alpha >= 0 shapes (docs/g1_hermite.md), which the oracle does not re-derive; each was tried by the auto, "
-      "toms748 and bisection solvers at that winding and none verified a curve (its claim is tested against "
-      "tanh-sinh end points by G1Hermite.SearchUpToMaxTurningStatesItsScope); "
-      "`curve_at_other_winding`: no_solution whose data have a verified curve at a winding in −2…2 outside the "
-      "message's scope (information, not a failure). Both `wrong_but_usable` and `false_no_curve` must be 0.";
+  doc.description = campaign_description();
   doc.notes = findings.empty() ? "No finding." : "### Findings\n" + findings;
   const std::vector<std::string> timing_columns{"seconds", "problems_per_second", "us_per_problem_per_thread"};
   const std::string timing_description =
