@@ -233,10 +233,14 @@ struct HermiteBounds {
   }
 };
 
-inline double point_distance(const std::complex<double>& a, const std::complex<double>& b) { return std::abs(a - b); }
+inline double point_norm(const std::complex<double>& a) { return std::abs(a); }
 template <class V>
-double point_distance(const V& a, const V& b) {
-  return (a - b).norm();
+double point_norm(const V& a) {
+  return a.norm();
+}
+template <class P>
+double point_distance(const P& a, const P& b) {
+  return point_norm(P(a - b));
 }
 
 /// Knot removal within a certified bound (Tiller's algorithm, The NURBS Book A5.8, one occurrence
@@ -276,7 +280,7 @@ double remove_knots_within(int p, std::vector<double>& U, std::vector<P>& pts, c
         continue;
       }
       const size_t first = rl - p, last = rl - s, off = first - 1;
-      temp.assign(last + 2 - off, P{});
+      temp.assign(last + 2 - off, pts[off]);  // every entry used is written below
       temp[0] = pts[off];
       temp[last + 1 - off] = pts[last + 1];
       size_t i = first, j = last, ii = 1, jj = last - off;
@@ -303,7 +307,7 @@ double remove_knots_within(int p, std::vector<double>& U, std::vector<P>& pts, c
         const double a = (u - u_new(k)) / (u_new(k + p) - u_new(k));
         const P back = a * q[k] + (1 - a) * q[k - 1];
         e = std::max(e, point_distance(back, pts[k]));
-        size = std::max(size, point_distance(pts[k], P{}) + point_distance(q[k], P{}));
+        size = std::max(size, point_norm(pts[k]) + point_norm(q[k]));
         finite = finite && std::isfinite(e);
       }
       const double step = e + 64 * DBL_EPSILON * size;  // rounding of the solve and the insertion
