@@ -72,12 +72,17 @@ std::complex<double> casteljau(Piece p, double t) {
   return p[0];
 }
 
+/// The derivative of a Bézier piece as a Bézier piece one degree lower (its hodograph).
+Piece hodograph(const Piece& q) {
+  const size_t n = q.size() - 1;
+  Piece d(n);
+  for (size_t i = 0; i < n; ++i) d[i] = static_cast<double>(n) * (q[i + 1] - q[i]);
+  return d;
+}
+
 /// Signed curvature of a Bézier piece at t ∈ [0, 1] (from its first and second hodographs).
 double bezier_curvature(const Piece& p, double t) {
-  const size_t n = p.size() - 1;
-  Piece d1(n), d2(n - 1);
-  for (size_t i = 0; i < n; ++i) d1[i] = static_cast<double>(n) * (p[i + 1] - p[i]);
-  for (size_t i = 0; i + 1 < n; ++i) d2[i] = static_cast<double>(n - 1) * (d1[i + 1] - d1[i]);
+  const Piece d1 = hodograph(p), d2 = hodograph(d1);
   const std::complex<double> v = casteljau(d1, t), a = casteljau(d2, t);
   const double speed = std::abs(v);
   return (v.real() * a.imag() - v.imag() * a.real()) / (speed * speed * speed);
@@ -107,22 +112,18 @@ Bernstein minus(Bernstein a, const Bernstein& b, double factor = 1) {
   return a;
 }
 
+/// One coordinate of a Bézier piece as a polynomial in Bernstein form.
+Bernstein part(const Piece& q, bool imag) {
+  Bernstein b(q.size());
+  for (size_t i = 0; i < q.size(); ++i) b[i] = imag ? q[i].imag() : q[i].real();
+  return b;
+}
+
 /// The numerator of dκ/dt of a Bézier piece c(t), whose sign is that of dκ/ds:
 ///   κ = (c' × c'') / |c'|³,  dκ/dt = [(c' × c''') |c'|² − 3 (c' × c'') (c' · c'')] / |c'|⁵,
 /// in Bernstein form (degree 4n − 6 for a piece of degree n ≥ 3).
 Bernstein curvature_derivative_numerator(const Piece& p) {
-  auto hodograph = [](const Piece& q) {
-    const size_t n = q.size() - 1;
-    Piece d(n);
-    for (size_t i = 0; i < n; ++i) d[i] = static_cast<double>(n) * (q[i + 1] - q[i]);
-    return d;
-  };
   const Piece d1 = hodograph(p), d2 = hodograph(d1), d3 = hodograph(d2);
-  auto part = [](const Piece& q, bool imag) {
-    Bernstein b(q.size());
-    for (size_t i = 0; i < q.size(); ++i) b[i] = imag ? q[i].imag() : q[i].real();
-    return b;
-  };
   const Bernstein x1 = part(d1, false), y1 = part(d1, true), x2 = part(d2, false), y2 = part(d2, true),
                   x3 = part(d3, false), y3 = part(d3, true);
   const Bernstein cross13 = minus(times(x1, y3), times(y1, x3)), speed2 = minus(times(x1, x1), times(y1, y1), -1.0);
@@ -156,12 +157,8 @@ double against(const Bernstein& b, double dir, double limit, long& nodes, double
 /// by the smallest Bernstein coefficient of |c'|² (infinite when that is not positive); refined
 /// until it is below `limit` where it can be (at most 4096 halvings).
 double curvature_against(const Piece& p, double dir, double limit) {
-  const size_t n = p.size() - 1;
-  Bernstein x1(n), y1(n);
-  for (size_t i = 0; i < n; ++i) {
-    const std::complex<double> d = static_cast<double>(n) * (p[i + 1] - p[i]);
-    x1[i] = d.real(), y1[i] = d.imag();
-  }
+  const Piece d1 = hodograph(p);
+  const Bernstein x1 = part(d1, false), y1 = part(d1, true);
   const Bernstein speed2 = minus(times(x1, x1), times(y1, y1), -1.0);
   const double min_speed2 = *std::min_element(speed2.begin(), speed2.end());
   if (!(min_speed2 > 0)) return HUGE_VAL;
