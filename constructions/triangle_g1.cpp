@@ -327,6 +327,51 @@ PlanarCurve place(const Problem& p, const StandardCurve& f, const Similarity& to
   return c.swapped ? curve.reversed(tri.a0) : curve;
 }
 
+/// The returned curve checked independently of the trial integrator (001 §2 places the end points
+/// exactly, which holds only as far as the trial positions do): each segment's end by two
+/// quadratures of the segment (the Gauss–Legendre kernel and gk-tanh-sinh), taken from the one
+/// with the smaller estimate, with error the larger of that estimate and their difference; its
+/// miss of the next segment's start or of a2, and the first start's miss of a0, over the chord
+/// |a2 − a0|. A trial integrator's estimate bounds the trial curve's positions, not the end after
+/// Λ0 is solved on them and the curve is scaled onto the triangle (a fixed-step rk4 end missed by
+/// twice its estimate). The larger of this and the trial estimate is summary.error's position term.
+void verify_placement(TriangleResult& g, const ControlTriangle& tri, const TriangleOptions& o, const char* fn) {
+  Summary& sum = g.summary;
+  const std::vector<LaSegment>& segs = g.curve.segments();
+  const double chord = std::abs(tri.a2 - tri.a0);
+  double miss = std::abs(segs.front().start() - tri.a0), estimate = 0;
+  for (size_t i = 0; i < segs.size(); ++i) {
+    const PositionResult kernel = position_at(segs[i], segs[i].length());
+    const PositionResult adaptive = position_at(segs[i], segs[i].length(), GkTanhSinh{});
+    sum.evaluations += kernel.evaluations + adaptive.evaluations;
+    if (!usable(kernel.status) && !usable(adaptive.status)) {
+      sum.status = Status::numerical_failure;
+      sum.message = std::string(fn) + ": the end of the solution's segment " + std::to_string(i) +
+                    " could not be verified: " + adaptive.message;
+      g.curve = PlanarCurve();
+      return;
+    }
+    const bool both = usable(kernel.status) && usable(adaptive.status);
+    const PositionResult& r = !usable(adaptive.status) || (usable(kernel.status) && kernel.error_estimate <= adaptive.error_estimate) ? kernel : adaptive;
+    estimate += both ? std::max(r.error_estimate, std::abs(kernel.point.position - adaptive.point.position)) : r.error_estimate;
+    miss = std::max(miss, std::abs(r.point.position - (i + 1 < segs.size() ? segs[i + 1].start() : tri.a2)));
+  }
+  sum.residuals.position = miss;
+  const double verified = (miss + estimate) / chord;
+  if (!std::isfinite(verified)) {
+    sum.status = Status::numerical_failure;
+    sum.message = std::string(fn) + ": the verified end-point error of the solution is not a finite number";
+    g.curve = PlanarCurve();
+    return;
+  }
+  sum.error = std::max(*sum.error, verified);
+  if (verified > o.tangent_tolerance && sum.status == Status::ok) {
+    sum.status = Status::tolerance_not_met;
+    sum.message = std::string(fn) + ": the verified end points miss the control points by " + format_number(verified) +
+                  " of the chord, above the accuracy target tangent_tolerance = " + format_number(o.tangent_tolerance);
+  }
+}
+
 template <class M>
 TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, double r, bool compound,
                      const TriangleOptions& o, const M& method, const char* fn, bool end_form = false) {
@@ -559,6 +604,8 @@ TriangleResult solve(const ControlTriangle& tri, double alpha0, double alpha1, d
     sum.status = Status::numerical_failure;
     sum.message = std::string(fn) + ": the solution is not representable in user units (" + bad +
                   " is not a finite double; control triangle scale max |a_i - a0| = " + format_number(c.scale) + ")" + why;
+  } else {
+    verify_placement(g, tri, o, fn);
   }
   std::string message = std::move(sum.message);
   g.conclude(sum.status, std::move(message));  // inaccurate when summary.error exceeds accept

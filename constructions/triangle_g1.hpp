@@ -23,9 +23,11 @@
 // solve_g1 with α < 1 then searches again with ρ = 1 at the large-ρ end, which resolves it);
 // a root finder's failure as its own status, and so the failure of a trial curve's positions (e.g.
 // an integrator's step budget: max_iterations); tolerance_not_met (usable) when the solution's
-// positions or end tangents miss their tolerances but summary.error (the end-tangent residual and
-// the positions' error estimate / chord) is within TriangleOptions::accept, inaccurate beyond it;
+// positions or end tangents miss their tolerances but summary.error (the end-tangent residual, the
+// trial positions' error estimate / chord, and the returned curve's end points verified by two
+// quadratures of its segments / chord) is within TriangleOptions::accept, inaccurate beyond it;
 // numerical_failure when the solution has no double-precision description in user units.
+// summary.residuals.position: the verified miss of a0, of the joint and of a2 (user units).
 //
 //   lac::ControlTriangle t{{0, 0}, {1, 0}, {2, 1}};
 //   lac::TriangleResult g = lac::solve_compound(t, -0.5, 1.5, 0.4, {.integrator = lac::Rk45{}});
@@ -63,12 +65,12 @@ struct TriangleOptions {
   /// search with ρ = 1 at the large end, docs/planar_segments.md).
   int max_bracket_probes = 13;
   /// Accuracy target: a solution whose end tangents miss the control legs by more than this
-  /// (rad), or whose positions' error estimate exceeds this relative to the chord, is reported as
-  /// tolerance_not_met.
+  /// (rad), or whose positions' error estimate or verified end-point error exceeds this relative
+  /// to the chord, is reported as tolerance_not_met.
   double tangent_tolerance = 1e-11;
-  /// Accept bound (common/accuracy.hpp) on summary.error, the larger of the end-tangent residual
-  /// (rad) and the positions' error estimate relative to the chord |a2 − a0|: beyond it the
-  /// result is inaccurate (not usable).
+  /// Accept bound (common/accuracy.hpp) on summary.error, the largest of the end-tangent residual
+  /// (rad), the trial positions' error estimate and the returned curve's verified end-point error,
+  /// both relative to the chord |a2 − a0|: beyond it the result is inaccurate (not usable).
   double accept = kDefaultAccept;
   /// Integrand evaluations of the whole call (both searches of solve_g1 counted apart): a trial
   /// curve is not drawn once they are spent, and the search ends max_iterations. One trial may

@@ -735,8 +735,41 @@ TEST(PlanarSegments, SummaryCountsTheWork) {
   EXPECT_EQ(g.summary.solver, "toms748");
   ASSERT_TRUE(g.summary.residuals.angle.has_value());
   EXPECT_LE(*g.summary.residuals.angle, 1e-12);
-  EXPECT_FALSE(g.summary.residuals.position.has_value());
+  // The returned curve's end points, checked by two quadratures of its segments (user units).
+  ASSERT_TRUE(g.summary.residuals.position.has_value());
+  EXPECT_LE(*g.summary.residuals.position, 1e-12 * std::sqrt(5.0));
   EXPECT_LE(std::abs(g.info.residual), 1e-15);
+}
+
+// A fixed-step trial integrator: rk4's estimate bounds the trial curve's positions, but Λ0 is
+// solved on them and the curve scaled onto the triangle, which moved this end by twice the
+// estimate (7.2e-7 of the chord). summary.error is the returned curve's verified end error, so
+// the answer is not usable under the default accept 1e-6, and the error is at least the miss
+// measured here by Gauss–Kronrod on the returned segment.
+TEST(PlanarSegments, FixedStepTrialEndIsVerifiedOnTheReturnedCurve) {
+  const ControlTriangle t{{5.8350107085723018, 6.3846030031230434},
+                          {4.027028486730047, 1.729600224138748},
+                          {2.4077519304166013, -1.1854158953915186}};
+  const double alpha = 2.9908801218436434;
+  TriangleOptions o;
+  o.integrator = Rk4{};
+  const TriangleResult g = solve_g1(t, alpha, o);
+  EXPECT_EQ(g.summary.status, Status::inaccurate) << g.summary.message;
+  ASSERT_TRUE(g.summary.error.has_value());
+  EXPECT_GT(*g.summary.error, kDefaultAccept);
+  // The same triangle with the verified curve kept (accept 1e-5): the error covers the true miss.
+  o.accept = 1e-5;
+  const TriangleResult k = solve_g1(t, alpha, o);
+  ASSERT_TRUE(k.usable()) << k.summary.message;
+  const double chord = std::abs(t.a2 - t.a0);
+  const PositionResult end = position_at(k.curve, k.curve.length(), GaussKronrod{});
+  const double miss = std::abs(end.point.position - t.a2) / chord;
+  EXPECT_GT(miss, 1e-6);  // the defect this guards against: the trial estimate was 7.2e-7
+  EXPECT_GE(*k.summary.error, miss - end.error_estimate / chord);
+  // On the default integrator the same triangle is ok to 1e-12.
+  const TriangleResult d = solve_g1(t, alpha);
+  EXPECT_EQ(d.summary.status, Status::ok) << d.summary.message;
+  EXPECT_LE(*d.summary.error, 1e-12);
 }
 
 }  // namespace
