@@ -7,6 +7,7 @@
 // inflection). Gauss–Kronrod converges slowly there; tanh-sinh converges exponentially.
 // Satisfies QuadratureMethod, so position_at / polyline accept it.
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <algorithm>
 #include <array>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <cmath>
@@ -94,9 +95,19 @@ struct GkTanhSinh {
       t.status = Status::numerical_failure;
       t.message = "tanh-sinh: non-finite value";
     } else if (err > 10 * tol * l1) {
-      if (r.error_estimate < err) return r;  // Gauss–Kronrod's estimate was the better one
-      t.status = Status::tolerance_not_met;
-      t.message = "tanh-sinh: error estimate " + format_number(err) + " above tolerance";
+      // Neither rule converged. Each estimate is a difference of its own refinements, which can
+      // both be small where the integrand has an interior kink neither resolves (a quadratic LA
+      // curve whose θ(s) levels off within a tiny arc); the two rules are independent, so the
+      // value keeps the smaller estimate but never less than their disagreement.
+      const double disagreement = std::abs(t.value - r.value);
+      IntegralResult<V>& kept = r.error_estimate < err ? r : t;
+      kept.error_estimate = std::max(kept.error_estimate, disagreement);
+      kept.evaluations = t.evaluations;
+      kept.status = Status::tolerance_not_met;
+      kept.message = std::string(&kept == &r ? "gauss-kronrod" : "tanh-sinh") + ": error estimate " +
+                     format_number(kept.error_estimate) + " above tolerance (the two rules differ by " +
+                     format_number(disagreement) + ")";
+      return kept;
     }
     return t;
   }

@@ -150,6 +150,20 @@ double QuadraticLaCurve::theta_of(double s, const KappaSolution& k, bool throw_o
 
 double QuadraticLaCurve::theta_at_s(double s) const { return theta_of(s, solve_kappa(s), true); }
 
+QuadraticLaCurve::SolutionError QuadraticLaCurve::solution_error(double s, const KappaSolution& k) const {
+  if (options_.inverse == special::ErfInverseMethod::ours || !std::isfinite(k.log_kappa) || k.status != Status::ok)
+    return {};
+  const double residual = std::abs(-s_integral_(k.log_kappa) / lambda_ - mirrored_s(s));
+  // ds/du = −e^(E(u))/Λ (docs/math.md §4), so |Δu| = r Λ e^(−E(u)).
+  return {std::abs(k.kappa) * residual, residual * lambda_ * std::exp(-s_integral_.exponent(k.log_kappa))};
+}
+
+double QuadraticLaCurve::theta_at_s(double s, double& theta_error) const {
+  const KappaSolution k = solve_kappa(s);
+  theta_error = solution_error(s, k).theta;
+  return theta_of(s, k, true);
+}
+
 CurvePoint QuadraticLaCurve::frame_at(double s, KappaSolution* solution) const {
   const KappaSolution k = solve_kappa(s);
   if (solution) *solution = k;

@@ -102,6 +102,18 @@ class QuadraticLaCurve {
   /// fails (a plain double has no status to carry that).
   double theta_at_s(double s) const;
 
+  /// Error of a κ(s) solution of this curve at s, to first order from its residual in the closed
+  /// form: r = |s(u) − s| gives |Δθ| = |κ| r (dθ/ds = κ) and |Δ log κ| = r |du/ds|. Zero for the
+  /// default inverse (Halley on the closed form with a bracket, polished to rounding); 003's
+  /// hybrid inverse is unpolished, so its error (up to 1e-4 rad) is the residual's.
+  struct SolutionError {
+    double theta = 0;      ///< rad
+    double log_kappa = 0;  ///< relative error of κ
+  };
+  SolutionError solution_error(double s, const KappaSolution& k) const;
+  /// θ(s) with the first-order error of its κ(s) solution (see solution_error).
+  double theta_at_s(double s, double& theta_error) const;
+
   /// s, θ, κ (signed), ρ = 1/κ (±inf at the inflection); position left 0 (see quadratic_position.hpp).
   /// `solution` (optional) receives κ(s)'s iterations and status.
   CurvePoint frame_at(double s, KappaSolution* solution = nullptr) const;

@@ -28,44 +28,79 @@ struct QuadraticSFormIntegrand {  // always inlined: see ThetaFormIntegrand (la_
   [[gnu::always_inline]] std::complex<double> operator()(double s) const { return std::polar(1.0, curve->theta_at_s(s)); }
 };
 
+/// The same integrand with 003's hybrid inverse of κ: it also records the largest first-order θ
+/// error of the κ(s) solutions at its nodes (QuadraticLaCurve::solution_error), which the
+/// quadrature's estimate cannot see.
+struct QuadraticSFormCheckedIntegrand {
+  const QuadraticLaCurve* curve;
+  double* max_theta_error;
+  std::complex<double> operator()(double s) const {
+    double e = 0;
+    const double theta = curve->theta_at_s(s, e);
+    *max_theta_error = std::max(*max_theta_error, e);
+    return std::polar(1.0, theta);
+  }
+};
+
+/// A piece whose log κ changes by more than this is split (bisection in s) unless it turns less
+/// than kNegligibleTurning: where κ falls by e^200 within a short arc θ(s) levels off like a kink,
+/// which neither Gauss–Kronrod nor tanh-sinh resolves on the whole piece, and whose two estimates
+/// can both miss their error.
+inline constexpr double kMaxLogKappaPerPiece = 8.0;
+inline constexpr double kNegligibleTurning = 1e-14;
+
 /// ∫ e^(iθ) over [a, b] (s inside s_domain()) in pieces of at most kMaxTurningPerPiece rad of
-/// |Δθ| each (bisection in s, at most 60 levels; first at the inflection when [a, b] passes it,
-/// where θ turns back), so that no quadrature call is given a piece whose oscillation it cannot
-/// resolve (near κ → ∞ the turning concentrates in a tiny arc). `budget`: evaluations this call
-/// may spend; past it status max_iterations, naming the CLI option that raises it.
+/// |Δθ| and, unless they turn less than kNegligibleTurning, kMaxLogKappaPerPiece of |Δ log κ|
+/// each (bisection in s, at most 60 levels; first at the inflection when [a, b] passes it, where θ
+/// turns back), so that no quadrature call is given a piece whose oscillation or kink it cannot
+/// resolve (near κ → ∞ the turning concentrates in a tiny arc). With 003's hybrid inverse the
+/// estimate adds |b − a| times twice the largest θ error of the κ(s) solutions at the nodes.
+/// `budget`: evaluations this call may spend; past it status max_iterations, naming the CLI option
+/// that raises it.
 template <QuadratureMethod M>
 IntegralResult<std::complex<double>> integrate_quadratic(const QuadraticLaCurve& c, const M& m, double a, double b,
                                                          long budget) {
   IntegralResult<std::complex<double>> r;
   if (a == b) return r;
+  const bool checked = c.options().inverse != special::ErfInverseMethod::ours;
+  double max_theta_error = 0;
   const QuadraticSFormIntegrand f{&c};
-  auto piece = [&](auto&& self, double lo, double hi, double theta_lo, double theta_hi, int depth) -> bool {
+  const QuadraticSFormCheckedIntegrand f_checked{&c, &max_theta_error};
+  struct Node {
+    double s, theta, log_kappa;  // log|κ| (−inf at the inflection itself)
+  };
+  auto node = [&](double s) { return Node{s, c.theta_at_s(s), c.solve_log_kappa(s).log_kappa}; };
+  auto piece = [&](auto&& self, const Node& lo, const Node& hi, int depth) -> bool {
     if (r.evaluations >= budget) {
       r.status = Status::max_iterations;
       r.message = std::string(M::name) + ": evaluation budget " + std::to_string(budget) + " exhausted after " +
-                  std::to_string(r.evaluations) + " evaluations at s = " + format_number(lo) + " of [" +
+                  std::to_string(r.evaluations) + " evaluations at s = " + format_number(lo.s) + " of [" +
                   format_number(a) + ", " + format_number(b) + "] (pieces of at most " +
                   format_number(kMaxTurningPerPiece) + " rad); raise --max-evaluations (range [1, 1e10])";
       return false;
     }
-    if (depth < 60 && std::abs(theta_hi - theta_lo) > kMaxTurningPerPiece) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid > std::min(lo, hi) && mid < std::max(lo, hi)) {
-        const double theta_mid = c.theta_at_s(mid);
-        return self(self, lo, mid, theta_lo, theta_mid, depth + 1) && self(self, mid, hi, theta_mid, theta_hi, depth + 1);
+    const double turning = std::abs(hi.theta - lo.theta);
+    const double log_kappa_change = std::abs(hi.log_kappa - lo.log_kappa);  // NaN/inf at the inflection: no split
+    const bool kink = std::isfinite(log_kappa_change) && log_kappa_change > kMaxLogKappaPerPiece && turning > kNegligibleTurning;
+    if (depth < 60 && (turning > kMaxTurningPerPiece || kink)) {
+      const double mid = 0.5 * (lo.s + hi.s);
+      if (mid > std::min(lo.s, hi.s) && mid < std::max(lo.s, hi.s)) {
+        const Node middle = node(mid);
+        return self(self, lo, middle, depth + 1) && self(self, middle, hi, depth + 1);
       }
     }
-    add_part(r, m.integrate(f, lo, hi));
+    if (checked) add_part(r, m.integrate(f_checked, lo.s, hi.s));
+    else add_part(r, m.integrate(f, lo.s, hi.s));
     return true;
   };
   const double inflection = c.s_at_zero_kappa();
   const bool passes = c.options().through_inflection && c.has_inflection() && std::min(a, b) < inflection &&
                       std::max(a, b) > inflection;
-  const double theta_a = c.theta_at_s(a), theta_b = c.theta_at_s(b);
+  const Node node_a = node(a), node_b = node(b);
   // Every piece costs at least one evaluation: a turning that needs more pieces than the budget
   // allows fails at once (e.g. θ ~ 1e80 rad far out on the curve), not after spending it.
-  const double turning = passes ? std::abs(theta_a - c.theta_at_zero_kappa()) + std::abs(c.theta_at_zero_kappa() - theta_b)
-                                : std::abs(theta_b - theta_a);
+  const double turning = passes ? std::abs(node_a.theta - c.theta_at_zero_kappa()) + std::abs(c.theta_at_zero_kappa() - node_b.theta)
+                                : std::abs(node_b.theta - node_a.theta);
   const double min_pieces = std::floor(turning / kMaxTurningPerPiece);
   if (!(min_pieces <= static_cast<double>(budget))) {
     r.status = Status::max_iterations;
@@ -76,16 +111,34 @@ IntegralResult<std::complex<double>> integrate_quadratic(const QuadraticLaCurve&
     return r;
   }
   if (passes) {
-    const double theta_i = c.theta_at_zero_kappa();
-    if (piece(piece, a, inflection, theta_a, theta_i, 0)) piece(piece, inflection, b, theta_i, theta_b, 0);
+    const Node node_i{inflection, c.theta_at_zero_kappa(), -std::numeric_limits<double>::infinity()};
+    if (piece(piece, node_a, node_i, 0)) piece(piece, node_i, node_b, 0);
   } else {
-    piece(piece, a, b, theta_a, theta_b, 0);
+    piece(piece, node_a, node_b, 0);
   }
+  if (checked) r.error_estimate += 2.0 * std::abs(b - a) * max_theta_error;
   if (usable(r.status) && !(std::isfinite(r.error_estimate) && std::isfinite(std::abs(r.value)))) {
     r.status = Status::numerical_failure;
     r.message = "non-finite position or error estimate";
   }
   return r;
+}
+
+/// The frame's own error at a point (QuadraticLaCurve::solution_error; nonzero with 003's hybrid
+/// inverse only): above accept (θ in rad, κ relative) the point is inaccurate, above the
+/// quadrature's 1e-12 class an ok point is tolerance_not_met.
+inline void grade_frame(PositionResult& r, const QuadraticLaCurve& c, const KappaSolution& k, double accept) {
+  const QuadraticLaCurve::SolutionError e = c.solution_error(r.point.s, k);
+  const double worst = std::max(e.theta, e.log_kappa);
+  if (!usable(r.status) || !(worst > 1e-12)) return;
+  const std::string what = "kappa(s) by 003's hybrid inverse misses theta by " + format_number(e.theta) +
+                           " rad and kappa by " + format_number(e.log_kappa) + " relative (first order, its residual)";
+  if (worst > accept) {
+    r.status = Status::inaccurate;
+    r.message = what + ", above accept " + format_number(accept);
+  } else {
+    merge_status(r, Status::tolerance_not_met, what);
+  }
 }
 }  // namespace detail
 
@@ -113,6 +166,7 @@ PositionResult position_at(const QuadraticLaCurve& c, double s, const M& method,
   detail::take_integral(r, detail::integrate_quadratic(c, method, 0.0, s, max_evaluations > 0 ? max_evaluations : position_budget(method)));
   if (!usable(r.status)) r.error_estimate = std::numeric_limits<double>::infinity();
   detail::grade_position(r, accept);
+  detail::grade_frame(r, c, k, accept);
   return r;
 }
 
@@ -141,11 +195,12 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
   c.check_s(s0, "s_from");
   c.check_s(s1, "s_to");
   std::vector<PositionResult> out(static_cast<size_t>(n));
+  std::vector<KappaSolution> kappas(out.size());
   std::vector<double> ts(out.size());
   for (int k = 0; k < n; ++k) {
     const double s = k + 1 == n ? s1 : s0 + (s1 - s0) * static_cast<double>(k) / static_cast<double>(n - 1);
     auto& r = out[static_cast<size_t>(k)];
-    KappaSolution ks;
+    KappaSolution& ks = kappas[static_cast<size_t>(k)];
     r.point = c.frame_at(s, &ks);
     detail::merge_status(r, ks.status, "kappa(s) at s = " + format_number(s) + ": " + std::string(to_string(ks.status)));
     r.form = Form::s;
@@ -159,6 +214,7 @@ std::vector<PositionResult> polyline(const QuadraticLaCurve& c, double s0, doubl
     return detail::integrate_quadratic(c, method, a, b, std::max(1L, (budget - state.spent) / 2));
   });
   detail::grade_positions(out, accept);
+  for (size_t k = 0; k < out.size(); ++k) detail::grade_frame(out[k], c, kappas[k], accept);
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "lac/common/error.hpp"
 #include "lac/curves/planar/la_position.hpp"
+#include "lac/integrators/gk_tanh_sinh.hpp"
 #include "lac/integrators/registry.hpp"
 #include "tests/support/reference_csv.hpp"
 
@@ -91,6 +92,20 @@ TEST(EstimateBound, GkTanhSinh) {
   check_method({"gk-tanh-sinh", {}, Form::automatic});
   check_method({"gk-tanh-sinh", {}, Form::theta});
   check_method({"gk-tanh-sinh", {}, Form::s});
+}
+// An interior kink neither rule of gk-tanh-sinh resolves: e^{i atan(k(x − c))} on [0, 1], whose
+// integral is [asinh(kt)/k + i √(1 + k²t²)/k] from t = −c to 1 − c. When both rules fail, the
+// estimate is at least their disagreement, and it bounds the error.
+TEST(EstimateBound, GkTanhSinhInteriorKink) {
+  const double c = 0.3141;
+  for (const double k : {1e3, 1e5, 1e7}) {
+    auto f = [&](double x) { return std::polar(1.0, std::atan(k * (x - c))); };
+    auto primitive = [&](double t) { return std::complex<double>(std::asinh(k * t) / k, std::hypot(1.0, k * t) / k); };
+    const std::complex<double> exact = primitive(1 - c) - primitive(-c);
+    const auto r = GkTanhSinh{}.integrate(f, 0.0, 1.0);
+    EXPECT_NE(r.status, Status::ok) << "k = " << k;
+    EXPECT_LE(std::abs(r.value - exact), r.error_estimate) << "k = " << k << ": " << r.message;
+  }
 }
 TEST(EstimateBound, Igf) { check_method({"igf", {}, Form::automatic}); }
 
