@@ -42,6 +42,23 @@ concept Integrand = std::invocable<F&, double> && requires(F& f, double t) {
 template <class F>
 using IntegrandValue = std::decay_t<std::invoke_result_t<F&, double>>;
 
+/// An integrand whose values carry a known absolute noise (values computed by an inner solver
+/// that is not polished): noise() bounds |f(t) − exact f(t)| over the nodes evaluated so far.
+/// Adaptive rules stop refining once their error estimate is down to that noise over the
+/// interval (refining cannot lower it) with status tolerance_not_met, instead of spending their
+/// budget on it; the caller adds the noise to the estimate.
+template <class F>
+concept NoisyIntegrand = Integrand<F> && requires(const F& f) {
+  { f.noise() } -> std::convertible_to<double>;
+};
+
+/// noise() of a NoisyIntegrand, 0 for any other.
+template <class F>
+double integrand_noise(const F& f) {
+  if constexpr (NoisyIntegrand<std::remove_cvref_t<F>>) return f.noise();
+  else return 0.0;
+}
+
 /// Wraps an integrand and counts its calls (callable as const, as Boost.Math requires).
 template <class F>
 struct CountingIntegrand {
@@ -377,7 +394,10 @@ struct GaussKronrod {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     constexpr size_t kResumAll = 512;
     int splits_since_resum = 0;
-    while (error > tol * std::abs(total) && error > 50 * kEps * l1 && std::isfinite(error) && !heap.empty()) {
+    // Floor: rounding (50 ε times ∫|f|), or the integrand's noise (NoisyIntegrand), which the
+    // difference of the two rules sees on every piece: 4 × noise × |b − a| (twice the noise per rule).
+    auto floor = [&] { return std::max(50 * kEps * l1, 4.0 * integrand_noise(f) * std::abs(b - a)); };
+    while (error > tol * std::abs(total) && error > floor() && std::isfinite(error) && !heap.empty()) {
       if (static_cast<long>(heap.size() + frozen.size()) >= max_intervals) {
         r.status = Status::tolerance_not_met;
         r.message = "gauss-kronrod: interval budget max_intervals = " + std::to_string(max_intervals) +
@@ -404,7 +424,7 @@ struct GaussKronrod {
       // (the re-sum made long runs quadratic) update in place and re-sum every 64 splits and
       // whenever the updated sum says converged, so stopping is always decided on an exact sum.
       error += left.error + right.error - worst.error;
-      const bool converged = !(error > tol * std::abs(total) && error > 50 * kEps * l1);
+      const bool converged = !(error > tol * std::abs(total) && error > floor());
       if (heap.size() + frozen.size() <= kResumAll || ++splits_since_resum >= 64 || converged) {
         splits_since_resum = 0;
         error = 0;
@@ -417,8 +437,11 @@ struct GaussKronrod {
     for (const Piece& p : frozen) error += p.error;
     if (r.status == Status::ok && error > tol * std::abs(total) && error > 50 * kEps * l1) {
       r.status = Status::tolerance_not_met;
-      r.message = "gauss-kronrod: error estimate " + format_number(error) + " above tolerance at max_depth " +
-                  std::to_string(max_depth);
+      r.message = error > floor() ? "gauss-kronrod: error estimate " + format_number(error) +
+                                        " above tolerance at max_depth " + std::to_string(max_depth)
+                                  : "gauss-kronrod: error estimate " + format_number(error) +
+                                        " above tolerance, at the integrand's noise " +
+                                        format_number(integrand_noise(f)) + " (refining cannot lower it)";
     }
     r.value = total;
     r.error_estimate = error + 2.0 * kEps * l1;

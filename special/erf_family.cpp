@@ -169,9 +169,11 @@ InverseResult erfc_inv_log(double log_q) {
 InverseResult erf_inv_hybrid_003(double y) {
   if (std::isnan(y)) throw_input_error("erf_inv_hybrid_003", "y", y, "(-1, 1)");
   // Newton region |x| ≤ 0.75 (003 gives no number; "near 0 where Newton is reliable").
-  static const double kNewtonLimit = erf(0.75);
+  // glibc's erf (< 1 ulp) inside the iteration: Boost's promotes to long double, which made the
+  // inverse's erf calls most of a quadratic position's time.
+  static const double kNewtonLimit = std::erf(0.75);
   return hybrid_003(
-      y, kNewtonLimit, 5.0, [](double x) { return erf(x); },
+      y, kNewtonLimit, 5.0, [](double x) { return std::erf(x); },
       [](double x) { return 2.0 / kSqrtPi * std::exp(-x * x); });
 }
 

@@ -40,6 +40,9 @@ struct QuadraticSFormCheckedIntegrand {
     *max_theta_error = std::max(*max_theta_error, e);
     return std::polar(1.0, theta);
   }
+  /// |Δ e^(iθ)| ≤ |Δθ|: the value noise so far (NoisyIntegrand), so that adaptive rules do not
+  /// refine on it.
+  double noise() const { return *max_theta_error; }
 };
 
 /// A piece whose log κ changes by more than this is split (bisection in s) unless it turns less
