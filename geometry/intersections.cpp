@@ -24,6 +24,7 @@ using cplx = std::complex<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 constexpr double kMaxTurn = 0.5;       // initial spans, and the most a transversal span may turn (rad)
+constexpr double kMaxGroupTurn = 1.0;  // most a group of near-parallel leaves turns on either curve (rad)
 constexpr int kMinSpans = 16;
 constexpr double kLeafFraction = 1e-4;  // near-parallel pairs are halved down to this × length
 constexpr int kGroupSamples = 33;  // samples of a group of near-parallel leaf pairs: at least this, 16 per pair
@@ -51,13 +52,15 @@ double root_in(F&& f, double lo, double hi, double flo, double fhi) {
 
 void conclude(Intersections& out, double L, const GeometryOptions& o, Status capped_status = Status::ok, std::string capped = {}) {
   std::sort(out.points.begin(), out.points.end(), [](const Intersection& x, const Intersection& y) { return x.s < y.s; });
-  // The same point found from two sides of a span or piece boundary.
+  // The same point found from two sides of a span or piece boundary (a touch, which fixes s only
+  // to about √tolerance × length, possibly by two neighbouring groups).
   std::vector<Intersection> merged;
-  const double window = 1e-8 * L;
+  const double window = 1e-8 * L, touch_window = 2 * std::sqrt(o.tolerance) * L;
   for (const Intersection& p : out.points) {
-    if (!merged.empty() && std::abs(p.s - merged.back().s) <= window && std::abs(p.t - merged.back().t) <= window) {
+    const bool tangent = !merged.empty() && (p.kind == IntersectionKind::tangent || merged.back().kind == IntersectionKind::tangent);
+    const double w = tangent ? std::max(window, touch_window) : window;
+    if (!merged.empty() && std::abs(p.s - merged.back().s) <= w && std::abs(p.t - merged.back().t) <= w) {
       // Keep the better-known of the two (e.g. a joint: the next segment's start is exact).
-      const bool tangent = p.kind == IntersectionKind::tangent || merged.back().kind == IntersectionKind::tangent;
       if (p.error_estimate < merged.back().error_estimate) merged.back() = p;
       if (tangent) merged.back().kind = IntersectionKind::tangent;
       continue;
@@ -366,11 +369,18 @@ Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double s
     const auto [i, j] = stack.back();
     stack.pop_back();
     const Span sa = A.spans[i], sb = B.spans[j];
+    // A leaf: both spans short and turning little (a short span can still turn many rad where κ
+    // is large, e.g. in the coil of a spiral: halved further).
+    const bool curled = !(sa.dev < kMaxTurn && sb.dev < kMaxTurn);
+    const bool at_leaf = std::max(2 * sa.half(), 2 * sb.half()) <= leaf && !curled;
     if (transversal(sa, sb)) {
       const bool done = solver.newton(sa, sb);
       if (A.tracer.failed() || B.tracer.failed()) break;
-      if (done || std::max(2 * sa.half(), 2 * sb.half()) <= leaf) continue;
-    } else if (std::max(2 * sa.half(), 2 * sb.half()) <= leaf) {
+      if (done) continue;
+    }
+    // A leaf pair, near-parallel or transversal where Newton found nothing (a crossing at a small
+    // angle, whose cones are disjoint by less than Newton resolves): the group step decides.
+    if (at_leaf) {
       leaves.push_back({i, j});
       if (leaves.size() > kMaxLeaves)
         return finish(Status::not_converged, "intersect_curves: more than " + std::to_string(kMaxLeaves) +
@@ -381,7 +391,7 @@ Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double s
     if (made() + 2 > options.max_spans)
       return finish(Status::max_iterations, "intersect_curves: max_spans = " + std::to_string(options.max_spans) +
                                                 " reached near s = " + format_number(sa.sc()) + " on a");
-    if (sa.half() >= sb.half()) {
+    if (curled ? sa.dev >= sb.dev : sa.half() >= sb.half()) {
       const auto [x, y] = A.halves(i);
       if (A.tracer.failed()) break;
       for (size_t c : {y, x})
@@ -407,6 +417,10 @@ Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double s
     used[g] = true;
     const Span &fa = A.spans[leaves[g].first], &fb = B.spans[leaves[g].second];
     double u0 = fa.u0, u1 = fa.u1, v0 = fb.u0, v1 = fb.u1;
+    // The range of θ over each curve's part of the group (θ is continuous on a segment, so the
+    // union of the members' [θ(c) − Δ, θ(c) + Δ] bounds it): a group turns at most kMaxGroupTurn
+    // on either curve, so that the foot point on b is the one root of (p_b − p_a)·T_b in its range.
+    double alo = fa.theta_c - fa.dev, ahi = fa.theta_c + fa.dev, blo = fb.theta_c - fb.dev, bhi = fb.theta_c + fb.dev;
     size_t members = 1;
     for (bool grew = true; grew;) {
       grew = false;
@@ -415,6 +429,10 @@ Intersections curves_search(SpanTree<TA>& A, SpanTree<TB>& B, double L, double s
         const Span &pa = A.spans[leaves[m].first], &pb = B.spans[leaves[m].second];
         if (pa.seg != fa.seg || pb.seg != fb.seg) continue;
         if (pa.u0 > u1 || pa.u1 < u0 || pb.u0 > v1 || pb.u1 < v0) continue;
+        const double nalo = std::min(alo, pa.theta_c - pa.dev), nahi = std::max(ahi, pa.theta_c + pa.dev);
+        const double nblo = std::min(blo, pb.theta_c - pb.dev), nbhi = std::max(bhi, pb.theta_c + pb.dev);
+        if (nahi - nalo > kMaxGroupTurn || nbhi - nblo > kMaxGroupTurn) continue;
+        alo = nalo, ahi = nahi, blo = nblo, bhi = nbhi;
         u0 = std::min(u0, pa.u0), u1 = std::max(u1, pa.u1), v0 = std::min(v0, pb.u0), v1 = std::max(v1, pb.u1);
         used[m] = grew = true;
         ++members;
@@ -447,6 +465,20 @@ Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, 
   SpanTree<detail::QuadraticSpanTracer> A(a, s0, s1, options.method, options.tolerance);
   SpanTree<SpanTracer> B(b, options.method);
   return curves_search(A, B, s1 - s0, std::max(s1 - s0, b.length()), options);
+}
+
+Intersections intersect_curves(const QuadraticLaCurve& a, double a0, double a1, const QuadraticLaCurve& b, double b0,
+                               double b1, const GeometryOptions& options) {
+  options.validate("intersect_curves");
+  a.check_s(a0, "a0");
+  a.check_s(a1, "a1");
+  if (!(a1 > a0)) throw_input_error("intersect_curves", "a1", a1, interval_text(a0, a.s_domain().hi));
+  b.check_s(b0, "b0");
+  b.check_s(b1, "b1");
+  if (!(b1 > b0)) throw_input_error("intersect_curves", "b1", b1, interval_text(b0, b.s_domain().hi));
+  SpanTree<detail::QuadraticSpanTracer> A(a, a0, a1, options.method, options.tolerance),
+      B(b, b0, b1, options.method, options.tolerance);
+  return curves_search(A, B, a1 - a0, std::max(a1 - a0, b1 - b0), options);
 }
 
 }  // namespace lac

@@ -1,6 +1,6 @@
 #pragma once
-// All intersections of a PlanarCurve with a line and with another PlanarCurve, ordered by arc
-// length along the (first) curve; each a crossing or a tangential touch.
+// All intersections of a PlanarCurve or an arc of a quadratic LA curve with a line and with another
+// such curve, ordered by arc length along the (first) curve; each a crossing or a tangential touch.
 //
 // Line (point P, unit direction D): the signed distance h(s) = D × (p(s) − P) has h' = sin(θ − arg D),
 // so h is strictly monotonic between the arc lengths where θ ≡ arg D (mod π). Those are found in
@@ -76,6 +76,11 @@ Intersections intersect_curves(const PlanarCurve& a, const PlanarCurve& b, const
 /// same search (s on a: the curve's arc length; t on b). Tolerance relative to max(s1 − s0, length of b).
 Intersections intersect_curves(const QuadraticLaCurve& a, double s0, double s1, const PlanarCurve& b,
                                const GeometryOptions& options = {});
+/// Every common point of the arcs [a0, a1] of a and [b0, b1] of b, two quadratic LA curves, by the
+/// same search (s on a, t on b: each curve's arc length). InputError naming a0, a1, b0 or b1 for an
+/// arc outside its curve's s_domain() or empty. Tolerance relative to max(a1 − a0, b1 − b0).
+Intersections intersect_curves(const QuadraticLaCurve& a, double a0, double a1, const QuadraticLaCurve& b, double b0,
+                               double b1, const GeometryOptions& options = {});
 
 constexpr std::string_view to_string(IntersectionKind k) { return k == IntersectionKind::crossing ? "crossing" : "tangent"; }
 

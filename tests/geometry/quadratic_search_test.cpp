@@ -354,6 +354,109 @@ TEST(GeometryQuadraticIntersectCurves, CrossingsWithAPlanarCurveMatchTheDenseRef
   std::printf("quadratic intersect_curves: %d arc/curve pairs, %d crossings; worst |s - s_ref|/L = %.2e\n", pairs, total, worst);
 }
 
+TEST(GeometryQuadraticIntersectCurves, CrossingsOfTwoArcsMatchTheDenseReference) {
+  // Two random arcs (two of three pairs two spirals; every third pair two spirals of nearby
+  // parameters, whose coils cross many times). Every quadratic LA curve passes through the origin
+  // at s = 0 along the x axis with κ = 1, so two arcs near s = 0 osculate there: b's arc is kept
+  // away from s = 0, so the pairs cross transversally. The
+  // reference: crossings of the two sample polylines, polished by Newton on both references'
+  // positions.
+  Lcg rng;
+  rng.x = 97531;
+  int pairs = 0, total = 0, most = 0, touches = 0;
+  double worst = 0;
+  const auto cr = [](cplx x, cplx y) { return x.real() * y.imag() - x.imag() * y.real(); };
+  for (int index = 0; index < 36; ++index) {
+    const Arc a = draw_arc(rng, index % 3 != 2);
+    Arc b = draw_arc(rng, index % 3 != 2);
+    if (index % 3 == 0) {  // a spiral beside a's: its parameters within 20 %, its inner coils (s < 0)
+      const QuadraticLaCurve& c = a.c;
+      const QuadraticLaCurve near(c.alpha() * rng.in(0.8, 1.2), c.gamma() * rng.in(0.8, 1.2), c.lambda() * rng.in(0.8, 1.2));
+      // Its arc ends at 0.3 s0, away from s = 0, where the two curves osculate (equal κ).
+      const double s0 = reach(near, 0.0, near.s_domain().lo, rng.in(10, 30));
+      if (s0 < -0.05) b = {near, s0, 0.3 * s0, true};
+    }
+    // b's arc keeps a distance gap from s = 0, on its side s < 0 where it can (there κ grows: the
+    // coils of a spiral); a pair whose b is too short for that is skipped.
+    const double gap = std::max(0.05 * (b.s1 - b.s0), 0.05);
+    if (b.s0 < gap && b.s1 > -gap) {
+      if (b.s0 < -2 * gap) b.s1 = -gap;
+      else if (b.s1 > 2 * gap) b.s0 = gap;
+      else continue;
+    }
+    const double La = a.s1 - a.s0, Lb = b.s1 - b.s0;
+    const Reference ra(a.c, a.s0, a.s1, 1000), rb(b.c, b.s0, b.s1, 1000);
+    std::vector<std::pair<double, double>> expected;
+    for (size_t i = 0; i + 1 < ra.samples.size(); ++i) {
+      const cplx a0 = ra.samples[i].p, a1 = ra.samples[i + 1].p;
+      for (size_t j = 0; j + 1 < rb.samples.size(); ++j) {
+        const cplx b0 = rb.samples[j].p, b1 = rb.samples[j + 1].p;
+        const double d = cr(a1 - a0, b1 - b0);
+        if (d == 0) continue;
+        const double x = cr(b0 - a0, b1 - b0) / d, y = cr(b0 - a0, a1 - a0) / d;
+        if (!(x >= 0 && x < 1 && y >= 0 && y < 1)) continue;
+        double s = ra.samples[i].s + x * (ra.samples[i + 1].s - ra.samples[i].s);
+        double t = rb.samples[j].s + y * (rb.samples[j + 1].s - rb.samples[j].s);
+        for (int it = 0; it < 20; ++it) {
+          const cplx F = ra.at(i, s) - rb.at(j, t);
+          const cplx ta = std::polar(1.0, a.c.theta_at_s(s)), tb = -std::polar(1.0, b.c.theta_at_s(t));
+          const double det = cr(ta, tb);
+          s += cr(-F, tb) / det;
+          t += cr(ta, -F) / det;
+        }
+        // Where the arcs run within a sample's sagitta of each other their polylines can cross
+        // without the arcs doing so: Newton then leaves the arcs (toward s = t = 0, where every
+        // quadratic LA curve passes); such a crossing is not the arcs'.
+        if (!(s >= a.s0 && s <= a.s1 && t >= b.s0 && t <= b.s1 && std::abs(ra.at(i, s) - rb.at(j, t)) <= 1e-13 * std::max(La, Lb)))
+          continue;
+        expected.push_back({s, t});
+      }
+    }
+    std::sort(expected.begin(), expected.end());
+    std::vector<std::pair<double, double>> merged;
+    for (const auto& e : expected)
+      if (merged.empty() || std::abs(e.first - merged.back().first) > 1e-9 * La) merged.push_back(e);
+    const Intersections r = intersect_curves(a.c, a.s0, a.s1, b.c, b.s0, b.s1);
+    ASSERT_TRUE(usable(r.status)) << r.message;
+    // Every reference crossing is found; an extra point may only be a touch within the tolerance
+    // (the arcs of nearby spirals can run within tolerance × max(a1 − a0, b1 − b0) of each other).
+    std::vector<bool> matched(r.points.size(), false);
+    for (const auto& [se, te] : merged) {
+      size_t k = 0;
+      while (k < r.points.size() && std::abs(r.points[k].s - se) > 1e-9 * La) ++k;
+      ASSERT_LT(k, r.points.size()) << "pair " << index << ": crossing at s = " << se << ", t = " << te << " missing";
+      matched[k] = true;
+      EXPECT_NEAR(r.points[k].t, te, 1e-9 * Lb) << "pair " << index;
+      EXPECT_LE(std::abs(r.points[k].point - ra.position(se)), 1e-9 * std::max(La, Lb));
+      worst = std::max(worst, std::abs(r.points[k].s - se) / La);
+    }
+    for (size_t k = 0; k < r.points.size(); ++k) {
+      if (matched[k]) continue;
+      const Intersection& x = r.points[k];
+      ++touches;
+      EXPECT_EQ(x.kind, IntersectionKind::tangent) << "pair " << index << ": extra crossing at s = " << x.s;
+      EXPECT_LE(std::abs(ra.position(x.s) - rb.position(x.t)), 1e-10 * std::max(La, Lb) + x.error_estimate)
+          << "pair " << index << ": extra point at s = " << x.s << " is not within the tolerance";
+    }
+    total += static_cast<int>(merged.size());
+    most = std::max(most, static_cast<int>(merged.size()));
+    ++pairs;
+  }
+  // The draw (fixed seed) gives 45 crossings, up to 11 on a pair (nearby spirals).
+  EXPECT_GE(total, 40);
+  EXPECT_GE(most, 8);
+  std::printf("quadratic x quadratic intersect_curves: %d arc pairs, %d crossings (most %d), %d touches within the "
+              "tolerance; worst |s - s_ref|/L = %.2e\n", pairs, total, most, touches, worst);
+}
+
+TEST(GeometryQuadraticIntersectCurves, ArcsOutsideTheDomainAreInputErrors) {
+  const QuadraticLaCurve a(-1.0, -0.3, 1.0), b(0.5, 0.2, 1.0);
+  const Interval r = a.default_range(), q = b.default_range();
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_curves(a, r.hi, r.lo, b, q.lo, q.hi); }), "a1");
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_curves(a, r.lo, r.hi, b, q.lo, q.lo); }), "b1");
+  EXPECT_EQ(test::thrown_parameter([&] { intersect_curves(a, r.lo, r.hi, b, q.lo, std::nan("")); }), "b1");
+}
+
 TEST(GeometryQuadraticClosestPoint, CapsEndWithAStatus) {
   // An arc turning about 28.6 rad needs 58 spans of 0.5 rad: more than max_spans = 16 (no hang,
   // a status that is not usable).
