@@ -10,54 +10,17 @@
 #include <vector>
 
 #include "lac/common/error.hpp"
+#include "lac/geometry/detail/space_spans.hpp"
 
 namespace lac {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kMaxTurn = 0.5;  // initial spans turn at most this much (rad)
-constexpr int kMinSpans = 16;
 constexpr std::uintmax_t kPolishIterations = 100;
 
-struct SpaceSpan {
-  size_t piece = 0;
-  double s0 = 0, s1 = 0;
-  Vec3 pc = Vec3::Zero(), tc = Vec3::UnitX();
-  double kappa_max = 0;
-  double half() const { return 0.5 * (s1 - s0); }
-  double sc() const { return 0.5 * (s0 + s1); }
-};
-
-class Tracer {
- public:
-  explicit Tracer(const SpaceCurve& c) : c_(c) {}
-  SpacePoint at(size_t piece, double s) {
-    ++evaluations;
-    // At a joint the span's own piece: frame_at takes the later one, so stay just inside.
-    const double lo = c_.piece_start(piece), hi = c_.piece_start(piece + 1);
-    SpacePoint p = c_.frame_at(std::clamp(s, lo, piece + 1 < c_.pieces().size() ? std::nextafter(hi, lo) : hi));
-    if (!usable(p.status) && usable(status)) status = p.status, message = p.message;
-    return p;
-  }
-  SpaceSpan make(size_t piece, double s0, double s1) {
-    SpaceSpan sp{piece, s0, s1};
-    const SpacePoint c = at(piece, sp.sc());
-    sp.pc = c.p;
-    sp.tc = c.t;
-    // κ decreases along a piece: its largest value on [s0, s1] is at s0 (closed form).
-    const double lo = c_.piece_start(piece), hi = c_.piece_start(piece + 1);
-    sp.kappa_max = std::max(c_.kappa_at(std::clamp(s0, lo, hi)), c_.kappa_at(std::clamp(s1, lo, std::nextafter(hi, lo))));
-    ++spans;
-    return sp;
-  }
-  long evaluations = 0, spans = 0;
-  Status status = Status::ok;
-  std::string message;
-
- private:
-  const SpaceCurve& c_;
-};
+using detail::SpaceSpan;
+using Tracer = detail::SpaceTracer;
 
 double segment_distance(const Vec3& q, const Vec3& a, const Vec3& b) {
   const Vec3 d = b - a;
@@ -70,7 +33,7 @@ double segment_distance(const Vec3& q, const Vec3& a, const Vec3& b) {
 double lower_bound(const SpaceSpan& sp, const Vec3& q) {
   const double h = sp.half();
   const double ball = (q - sp.pc).norm() - h;
-  const double capsule = segment_distance(q, sp.pc - h * sp.tc, sp.pc + h * sp.tc) - h * std::min(sp.kappa_max * h, 2.0);
+  const double capsule = segment_distance(q, sp.pc - h * sp.tc, sp.pc + h * sp.tc) - h * sp.turn();
   return std::max({ball, capsule, 0.0});
 }
 
@@ -127,27 +90,8 @@ SpaceClosestPoint closest_point(const SpaceCurve& curve, const Vec3& query, cons
   };
   const auto failed = [&] { return !usable(tr.status); };
 
-  // Cover: per piece, spans turning at most kMaxTurn (∫κ ≤ κ(start) · length) and at most 1/16 of L.
-  std::vector<SpaceSpan> store;
-  double total = 0;
-  std::vector<long> counts;
-  for (size_t k = 0; k < curve.pieces().size(); ++k) {
-    const double a = curve.piece_start(k), b = curve.piece_start(k + 1);
-    const double n = std::max({std::ceil(curve.kappa_at(a) * (b - a) / kMaxTurn), std::ceil((b - a) / L * kMinSpans), 1.0});
-    total += n;
-    if (!(total <= static_cast<double>(options.max_spans)))
-      return finish(Status::max_iterations, "closest_point: covering the curve needs more than max_spans = " +
-                                                std::to_string(options.max_spans) + " spans");
-    counts.push_back(static_cast<long>(n));
-  }
-  for (size_t k = 0; k < curve.pieces().size(); ++k) {
-    const double a = curve.piece_start(k), b = curve.piece_start(k + 1);
-    for (long i = 0; i < counts[k]; ++i) {
-      const double n = static_cast<double>(counts[k]);
-      store.push_back(tr.make(k, i == 0 ? a : a + (b - a) * i / n, i + 1 == counts[k] ? b : a + (b - a) * (i + 1) / n));
-      if (failed()) return finish(tr.status, "closest_point: " + tr.message);
-    }
-  }
+  std::vector<SpaceSpan> store = detail::cover(tr, options);
+  if (store.empty()) return finish(tr.status, "closest_point: " + tr.message);
 
   Candidate best;
   size_t best_span = 0;

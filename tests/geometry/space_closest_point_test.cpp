@@ -28,10 +28,10 @@ struct Lcg {
 
 using test::two_pieces;
 
-SpaceCurve coil() {  // one piece turning several times (a slowly rising spiral)
-  const LaSpaceCurve c0(2, 1, 0.05, 0.02, 1.0, TorsionType::type1);
-  EXPECT_GT(c0.turning(20.0), 12.0);
-  return SpaceCurve({{c0, 0, 20.0, Frame3{}}}, SpacePlacement{}, {});
+using test::coil;
+
+TEST(GeometrySpaceClosestPoint, TheCoilTurnsSeveralTimes) {
+  EXPECT_GT(coil().pieces()[0].law.turning(20.0), 12.0);
 }
 
 std::pair<double, double> reference(const SpaceCurve& c, const Vec3& q, int* minima) {

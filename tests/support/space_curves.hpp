@@ -19,4 +19,10 @@ inline SpaceCurve two_pieces() {
   return SpaceCurve({{c0, 0, 0.5, Frame3{}}, {c1, 0.1, 0.6, joint}}, pl, {});
 }
 
+/// One piece turning several times (a slowly rising spiral), arc length 20.
+inline SpaceCurve coil() {
+  const LaSpaceCurve c0(2, 1, 0.05, 0.02, 1.0, TorsionType::type1);
+  return SpaceCurve({{c0, 0, 20.0, Frame3{}}}, SpacePlacement{}, {});
+}
+
 }  // namespace lac::test
