@@ -39,6 +39,7 @@ from ._lac import (  # noqa: F401
     gamma_inc_detailed,
     intersect_curves,
     intersect_line,
+    intersect_plane,
     mirror,
     offset,
     offset_cusp,

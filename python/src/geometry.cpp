@@ -1,6 +1,7 @@
 // Geometry on planar curves (geometry/, docs/geometry.md) for lac.Curve: closest point,
 // intersections with a line or another curve, offsets and their first cusp, transforms; closest
-// point and line intersections for arcs of lac.QuadraticCurve.
+// point and intersections (with a line, a curve or another arc) for arcs of lac.QuadraticCurve;
+// closest point and plane intersections for lac.SpaceCurve.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -10,6 +11,8 @@
 #include "lac/geometry/closest_point.hpp"
 #include "lac/geometry/intersections.hpp"
 #include "lac/geometry/offset.hpp"
+#include "lac/geometry/space_closest_point.hpp"
+#include "lac/geometry/space_intersections.hpp"
 #include "lac/geometry/transforms.hpp"
 
 namespace lacpy {
@@ -144,6 +147,89 @@ void bind_geometry(py::module_& m) {
       py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
       (std::string("Every intersection of the curves a and b, ordered by s on a (t: arc length on b); as "
                    "intersect_line.") + kOptions + " max_points: cap on the intersections (default 10000).").c_str());
+  m.def(
+      "intersect_curves",
+      [arc](const lac::QuadraticLaCurve& a, const Curve& b, std::optional<double> s_from, std::optional<double> s_to,
+            double tolerance, long max_spans, double accept, long max_points) {
+        const auto [s0, s1] = arc(a, s_from, s_to);
+        return intersections(
+            lac::intersect_curves(a, s0, s1, b.curve, options(tolerance, max_spans, accept, max_points)));
+      },
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
+      py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept,
+      py::arg("max_points") = 10000,
+      (std::string("Every intersection of the arc [s_from, s_to] of a QuadraticCurve a (default: its default_range) "
+                   "with the curve b, ordered by s on a (t: arc length on b); as intersect_line.") + kOptions).c_str());
+  m.def(
+      "intersect_curves",
+      [arc](const lac::QuadraticLaCurve& a, const lac::QuadraticLaCurve& b, std::optional<double> a_from,
+            std::optional<double> a_to, std::optional<double> b_from, std::optional<double> b_to, double tolerance,
+            long max_spans, double accept, long max_points) {
+        const auto [a0, a1] = arc(a, a_from, a_to);
+        const auto [b0, b1] = arc(b, b_from, b_to);
+        return intersections(
+            lac::intersect_curves(a, a0, a1, b, b0, b1, options(tolerance, max_spans, accept, max_points)));
+      },
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("a_from") = py::none(), py::arg("a_to") = py::none(),
+      py::arg("b_from") = py::none(), py::arg("b_to") = py::none(), py::arg("tolerance") = 1e-10,
+      py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
+      (std::string("Every intersection of the arcs [a_from, a_to] of QuadraticCurve a and [b_from, b_to] of "
+                   "QuadraticCurve b (defaults: their default_range), ordered by s on a (t: arc length on b); as "
+                   "intersect_line.") + kOptions).c_str());
+  // Space curves: the closest point and the plane's intersections (positions are the curve's own).
+  const auto xyz = [](const lac::Vec3& v) { return py::make_tuple(v[0], v[1], v[2]); };
+  m.def(
+      "closest_point",
+      [xyz](const SpaceCurve& c, py::handle point, double tolerance, long max_spans, double accept) {
+        const lac::SpaceClosestPoint r =
+            lac::closest_point(c.curve, point3(point, "closest_point", "point"), options(tolerance, max_spans, accept));
+        py::dict d;
+        d["status"] = status_text(r.status);
+        d["message"] = r.message;
+        d["s"] = r.s;
+        d["point"] = xyz(r.point);
+        d["distance"] = r.distance;
+        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
+        d["spans"] = r.spans;
+        d["evaluations"] = r.evaluations;
+        return d;
+      },
+      py::arg("curve"), py::arg("point"), py::kw_only(), py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000,
+      py::arg("accept") = lac::kDefaultAccept,
+      (std::string("The point of a SpaceCurve closest to `point` (x, y, z; global over the curve): the same dict, "
+                   "point as (x, y, z); error_estimate bounds the search's gap relative to the curve's own positions.") +
+       kOptions).c_str());
+  m.def(
+      "intersect_plane",
+      [xyz](const SpaceCurve& c, py::handle point, py::handle normal, double tolerance, long max_spans, double accept,
+            long max_points) {
+        const lac::SpaceIntersections r =
+            lac::intersect_plane(c.curve, point3(point, "intersect_plane", "point"),
+                                 point3(normal, "intersect_plane", "normal"),
+                                 options(tolerance, max_spans, accept, max_points));
+        py::list points;
+        for (const lac::SpaceIntersection& x : r.points) {
+          py::dict p;
+          p["s"] = x.s;
+          p["point"] = xyz(x.point);
+          p["residual"] = x.residual;
+          p["kind"] = std::string(lac::to_string(x.kind));
+          points.append(p);
+        }
+        py::dict d;
+        d["status"] = status_text(r.status);
+        d["message"] = r.message;
+        d["points"] = points;
+        d["spans"] = r.spans;
+        d["evaluations"] = r.evaluations;
+        return d;
+      },
+      py::arg("curve"), py::arg("point"), py::arg("normal"), py::kw_only(), py::arg("tolerance") = 1e-10,
+      py::arg("max_spans") = 200000, py::arg("accept") = lac::kDefaultAccept, py::arg("max_points") = 10000,
+      (std::string("Every intersection of a SpaceCurve with the plane through `point` with normal `normal`, ordered "
+                   "by s: dict status, message, points (dicts s, point, residual = distance from the plane, kind = "
+                   "crossing | tangent), spans, evaluations.") + kOptions +
+       " max_points: cap on the intersections (default 10000).").c_str());
   m.def(
       "offset",
       [](const Curve& c, py::array_t<double, py::array::c_style | py::array::forcecast> s, double d) {

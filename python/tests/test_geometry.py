@@ -142,3 +142,74 @@ def test_quadratic_arc_closest_point_and_line():
     with pytest.raises(lac.InputError) as e:
         lac.closest_point(q, (0, 0), s_from=1.0, s_to=0.0)
     assert e.value.parameter == "s1"
+
+
+def polyline_crossings(p, q):
+    """Pairs (i, j) of crossing segments of two polylines (x, y arrays), vectorized."""
+    ax, ay, bx, by = p.x[:, None], p.y[:, None], q.x[None, :], q.y[None, :]
+    dax, day = np.diff(p.x)[:, None], np.diff(p.y)[:, None]
+    dbx, dby = np.diff(q.x)[None, :], np.diff(q.y)[None, :]
+    den = dax * dby - day * dbx
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = ((bx[:, :-1] - ax[:-1]) * dby - (by[:, :-1] - ay[:-1]) * dbx) / den
+        v = ((bx[:, :-1] - ax[:-1]) * day - (by[:, :-1] - ay[:-1]) * dax) / den
+    return np.argwhere((u >= 0) & (u < 1) & (v >= 0) & (v < 1))
+
+
+def test_quadratic_arc_intersect_curves(spiral):
+    """lac.intersect_curves with an arc of a QuadraticCurve against a Curve and against another
+    arc: as many points as the dense polylines cross, each on both curves, inside both arcs."""
+    q = lac.QuadraticCurve(0.5, 0.2, 1.0)
+    s0, s1 = -3.0, 3.0
+    a = q.eval(np.linspace(s0, s1, 3001))
+    b = dense(spiral, 3001)
+    r = lac.intersect_curves(q, spiral, s_from=s0, s_to=s1)
+    assert r["status"] == "ok", r["message"]
+    assert len(r["points"]) == len(polyline_crossings(a, b)) >= 2
+    for x in r["points"]:
+        assert s0 <= x["s"] <= s1
+        e, f = q.eval([x["s"]]), spiral.eval([x["t"]])
+        assert math.dist((e.x[0], e.y[0]), x["point"]) < 1e-9
+        assert math.dist((f.x[0], f.y[0]), x["point"]) < 1e-9
+    o = lac.QuadraticCurve(0.3, 0.25, 1.2)
+    t0, t1 = -3.0, -0.2  # its inner coils (kappa grows as s decreases) cross the first arc's
+    c = o.eval(np.linspace(t0, t1, 3001))
+    r = lac.intersect_curves(q, o, a_from=s0, a_to=s1, b_from=t0, b_to=t1)
+    assert r["status"] == "ok", r["message"]
+    assert len(r["points"]) == len(polyline_crossings(a, c)) >= 8
+    for x in r["points"]:
+        assert s0 <= x["s"] <= s1 and t0 <= x["t"] <= t1
+        e, f = q.eval([x["s"]]), o.eval([x["t"]])
+        assert math.dist((e.x[0], e.y[0]), x["point"]) < 1e-9
+        assert math.dist((f.x[0], f.y[0]), x["point"]) < 1e-9
+    with pytest.raises(lac.InputError) as e:
+        lac.intersect_curves(q, o, a_from=1.0, a_to=0.0)
+    assert e.value.parameter == "a1"
+
+
+def test_space_curve_closest_point_and_plane():
+    """lac.closest_point / intersect_plane on a lac.SpaceCurve against its dense samples."""
+    sp = lac.space(p0=(0, 0, 0), v0=(1, 0, 0), p1=(1, 1, 0.3), v1=(0, 1, 0.2), alpha=0.0, beta=0.0, omega=0.1)
+    assert sp.usable, sp.message
+    c = sp.curve
+    e = c.sample(20001)
+    q = (0.8, 0.2, 0.5)
+    r = lac.closest_point(c, q)
+    assert r["status"] == "ok", r["message"]
+    d = np.sqrt((e.x - q[0]) ** 2 + (e.y - q[1]) ** 2 + (e.z - q[2]) ** 2)
+    h = c.length / 20000
+    assert d.min() - h <= r["distance"] <= d.min() + 1e-12
+    assert math.isclose(math.dist(r["point"], q), r["distance"], rel_tol=1e-12)
+    for p, n in [((0.5, 0.5, 0.1), (1, -1, 0.2)), ((0.2, 0.0, 0.0), (1, 0, 0)), ((0, 0, 0.15), (0, 0, 1))]:
+        x = lac.intersect_plane(c, p, n)
+        assert x["status"] == "ok", x["message"]
+        u = np.array(n, dtype=float) / np.linalg.norm(n)
+        hv = u[0] * (e.x - p[0]) + u[1] * (e.y - p[1]) + u[2] * (e.z - p[2])
+        changes = np.nonzero(np.sign(hv[:-1]) * np.sign(hv[1:]) < 0)[0]
+        assert len(x["points"]) == len(changes) >= 1
+        for y, i in zip(x["points"], changes):
+            assert e.s[i] - 1e-12 <= y["s"] <= e.s[i + 1] + 1e-12 and y["kind"] == "crossing"
+            assert abs(np.dot(u, np.subtract(y["point"], p))) == pytest.approx(y["residual"], abs=1e-15)
+    with pytest.raises(lac.InputError) as err:
+        lac.intersect_plane(c, (0, 0, 0), (0, 0, 0))
+    assert err.value.parameter == "normal"
