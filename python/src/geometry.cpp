@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 #include <utility>
 
 #include "bindings.hpp"
@@ -61,12 +62,17 @@ Result result(const lac::Summary& summary, py::object c) {
 }
 
 /// A ClosestPoint as the dict of lac.closest_point.
-py::dict closest_dict(const lac::ClosestPoint& r) {
+py::tuple xyz(const lac::Vec3& v) { return py::make_tuple(v[0], v[1], v[2]); }
+
+// A closest point (planar or space) as a dict; its point as (x, y) or (x, y, z).
+template <class R>
+py::dict closest_dict(const R& r) {
         py::dict d;
         d["status"] = status_text(r.status);
         d["message"] = r.message;
         d["s"] = r.s;
-        d["point"] = xy(r.point);
+        if constexpr (std::is_same_v<R, lac::SpaceClosestPoint>) d["point"] = xyz(r.point);
+        else d["point"] = xy(r.point);
         d["distance"] = r.distance;
         d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
         d["spans"] = r.spans;
@@ -177,22 +183,11 @@ void bind_geometry(py::module_& m) {
                    "QuadraticCurve b (defaults: their default_range), ordered by s on a (t: arc length on b); as "
                    "intersect_line.") + kOptions).c_str());
   // Space curves: the closest point and the plane's intersections (positions are the curve's own).
-  const auto xyz = [](const lac::Vec3& v) { return py::make_tuple(v[0], v[1], v[2]); };
   m.def(
       "closest_point",
-      [xyz](const SpaceCurve& c, py::handle point, double tolerance, long max_spans, double accept) {
-        const lac::SpaceClosestPoint r =
-            lac::closest_point(c.curve, point3(point, "closest_point", "point"), options(tolerance, max_spans, accept));
-        py::dict d;
-        d["status"] = status_text(r.status);
-        d["message"] = r.message;
-        d["s"] = r.s;
-        d["point"] = xyz(r.point);
-        d["distance"] = r.distance;
-        d["error_estimate"] = std::isfinite(r.error_estimate) ? py::object(py::float_(r.error_estimate)) : py::object(py::none());
-        d["spans"] = r.spans;
-        d["evaluations"] = r.evaluations;
-        return d;
+      [](const SpaceCurve& c, py::handle point, double tolerance, long max_spans, double accept) {
+        return closest_dict(
+            lac::closest_point(c.curve, point3(point, "closest_point", "point"), options(tolerance, max_spans, accept)));
       },
       py::arg("curve"), py::arg("point"), py::kw_only(), py::arg("tolerance") = 1e-10, py::arg("max_spans") = 200000,
       py::arg("accept") = lac::kDefaultAccept,
@@ -201,7 +196,7 @@ void bind_geometry(py::module_& m) {
        kOptions).c_str());
   m.def(
       "intersect_plane",
-      [xyz](const SpaceCurve& c, py::handle point, py::handle normal, double tolerance, long max_spans, double accept,
+      [](const SpaceCurve& c, py::handle point, py::handle normal, double tolerance, long max_spans, double accept,
             long max_points) {
         const lac::SpaceIntersections r =
             lac::intersect_plane(c.curve, point3(point, "intersect_plane", "point"),

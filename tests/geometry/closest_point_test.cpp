@@ -12,6 +12,7 @@
 #include "lac/geometry/closest_point.hpp"
 #include "reference_curve.hpp"
 #include "tests/support/input_error.hpp"
+#include "tests/support/lcg.hpp"
 
 namespace lac {
 namespace {
@@ -19,14 +20,7 @@ namespace {
 using test::cld;
 using test::ld;
 
-// A fixed pseudo-random sequence in [0, 1).
-struct Lcg {
-  std::uint64_t x = 12345;
-  double next() {
-    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(x >> 11) * 0x1.0p-53;
-  }
-};
+using test::Lcg;
 
 TEST(GeometryClosestPoint, GlobalMinimumMatchesDenseReference) {
   int several_minima = 0, near_evolute = 0, checked = 0;
@@ -37,7 +31,7 @@ TEST(GeometryClosestPoint, GlobalMinimumMatchesDenseReference) {
     const double L = c.length();
     const BoundingBox box = c.bounding_box();
     std::vector<std::complex<double>> queries;
-    Lcg rng;
+    Lcg rng{12345};
     const std::complex<double> span = box.hi - box.lo;
     for (int i = 0; i < 25; ++i)
       queries.push_back(box.lo - 0.2 * span + std::complex<double>(1.4 * span.real() * rng.next(), 1.4 * span.imag() * rng.next()));

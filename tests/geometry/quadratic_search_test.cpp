@@ -26,20 +26,14 @@
 #include "curves.hpp"
 #include "reference_curve.hpp"
 #include "tests/support/input_error.hpp"
+#include "tests/support/lcg.hpp"
 
 namespace lac {
 namespace {
 
 using cplx = std::complex<double>;
 
-struct Lcg {
-  std::uint64_t x = 987654321;
-  double next() {
-    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(x >> 11) * 0x1.0p-53;
-  }
-  double in(double a, double b) { return a + (b - a) * next(); }
-};
+using test::Lcg;
 
 const GaussKronrod kTight{1e-15, 500};
 

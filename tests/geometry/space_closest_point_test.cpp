@@ -14,17 +14,12 @@
 #include "lac/geometry/space_closest_point.hpp"
 #include "tests/support/space_curves.hpp"
 #include "tests/support/input_error.hpp"
+#include "tests/support/lcg.hpp"
 
 namespace lac {
 namespace {
 
-struct Lcg {
-  std::uint64_t x = 4242;
-  double next() {
-    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(x >> 11) * 0x1.0p-53;
-  }
-};
+using test::Lcg;
 
 using test::two_pieces;
 
@@ -53,7 +48,7 @@ std::pair<double, double> reference(const SpaceCurve& c, const Vec3& q, int* min
 }
 
 TEST(GeometrySpaceClosestPoint, GlobalMinimumMatchesDenseReference) {
-  Lcg rng;
+  Lcg rng{4242};
   int checked = 0, several = 0;
   double worst = 0;
   long spans = 0;
