@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "lac/common/error.hpp"
+#include "lac/geometry/detail/roots.hpp"
 #include "lac/geometry/detail/spans.hpp"
 
 namespace lac {
@@ -38,16 +39,9 @@ double cross(cplx a, cplx b) { return a.real() * b.imag() - a.imag() * b.real();
 double dot(cplx a, cplx b) { return (std::conj(a) * b).real(); }
 cplx unit(cplx z) { return z / std::abs(z); }
 
-// TOMS 748 on [lo, hi] to 4 ulps of u (and ε of the bracket's width where u is near 0).
 template <class F>
 double root_in(F&& f, double lo, double hi, double flo, double fhi) {
-  std::uintmax_t iterations = kRootIterations;
-  const double eps = std::numeric_limits<double>::epsilon(), floor = eps * (hi - lo);
-  const auto close = [eps, floor](double a, double b) {
-    return std::abs(b - a) <= 4 * eps * std::max(std::abs(a), std::abs(b)) + floor;
-  };
-  const auto r = boost::math::tools::toms748_solve(f, lo, hi, flo, fhi, close, iterations);
-  return std::abs(f(r.first)) <= std::abs(f(r.second)) ? r.first : r.second;
+  return detail::root_in(f, lo, hi, flo, fhi, kRootIterations);
 }
 
 void conclude(Intersections& out, double L, const GeometryOptions& o, Status capped_status = Status::ok, std::string capped = {}) {

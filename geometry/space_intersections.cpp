@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <boost/math/tools/minima.hpp>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
 
 #include "lac/common/error.hpp"
+#include "lac/geometry/detail/roots.hpp"
 #include "lac/geometry/detail/space_spans.hpp"
 
 namespace lac {
@@ -34,7 +34,8 @@ SpaceIntersections intersect_plane(const SpaceCurve& curve, const Vec3& point, c
     throw_input_error("intersect_plane", "normal", "all three coordinates finite and not all zero");
   curve.check_s(0.0, "curve");
   const Vec3 n = normal.normalized();
-  const double L = curve.length(), leaf = options.tolerance * L, touch = options.tolerance * L;
+  // Leaves are halved down to, and touches found within, tolerance × length.
+  const double L = curve.length(), resolution = options.tolerance * L;
   const double tangent_angle = std::sqrt(options.tolerance);
   SpaceIntersections out;
   detail::SpaceTracer tr(curve);
@@ -77,17 +78,10 @@ SpaceIntersections intersect_plane(const SpaceCurve& curve, const Vec3& point, c
     out.points.push_back({s, f.p, std::abs(h_of(f)), kind});
   };
   const auto crossing = [&](const detail::SpaceSpan& sp, const End& a, const End& b) {
-    const auto h = [&](double s) { return h_of(tr.at(sp.piece, s)); };
-    std::uintmax_t iterations = kPolishIterations;
-    const double floor = std::numeric_limits<double>::epsilon() * (b.s - a.s);
-    const auto tol = [floor](double x, double y) {
-      return std::abs(y - x) <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(x), std::abs(y)) + floor;
-    };
-    const auto r = boost::math::tools::toms748_solve(h, a.s, b.s, a.h, b.h, tol, iterations);
-    const SpacePoint f0 = tr.at(sp.piece, r.first), f1 = tr.at(sp.piece, r.second);
-    const bool first = std::abs(h_of(f0)) <= std::abs(h_of(f1));
-    const SpacePoint& f = first ? f0 : f1;
-    add(first ? r.first : r.second, f, kind_of(f));
+    const double s = detail::root_in([&](double x) { return h_of(tr.at(sp.piece, x)); }, a.s, b.s, a.h, b.h,
+                                     kPolishIterations);
+    const SpacePoint f = tr.at(sp.piece, s);
+    add(s, f, kind_of(f));
   };
 
   std::vector<detail::SpaceSpan> stack = detail::cover(tr, options);
@@ -97,9 +91,9 @@ SpaceIntersections intersect_plane(const SpaceCurve& curve, const Vec3& point, c
     const detail::SpaceSpan sp = stack.back();
     stack.pop_back();
     const double r = sp.half(), slope = std::abs(n.dot(sp.tc)), hc = n.dot(sp.pc - point);
-    if (std::abs(hc) - r * (slope + sp.turn()) > touch) continue;  // no root and no touch on the span
+    if (std::abs(hc) - r * (slope + sp.turn()) > resolution) continue;  // no root and no touch on the span
     const bool monotonic = slope > sp.turn();
-    if (monotonic || 2 * r <= leaf || !(sp.sc() > sp.s0 && sp.sc() < sp.s1)) {
+    if (monotonic || 2 * r <= resolution || !(sp.sc() > sp.s0 && sp.sc() < sp.s1)) {
       const End a = end_at(sp.piece, sp.s0), b = end_at(sp.piece, sp.s1);
       if (tr.failed()) return finish(tr.status, "intersect_plane: " + tr.message);
       if (a.h == 0) add(a.s, a.frame, kind_of(a.frame));
@@ -111,7 +105,7 @@ SpaceIntersections intersect_plane(const SpaceCurve& curve, const Vec3& point, c
         std::uintmax_t iterations = kPolishIterations;
         const auto m = boost::math::tools::brent_find_minima([&](double s) { return sign * h_of(tr.at(sp.piece, s)); },
                                                              sp.s0, sp.s1, kBrentBits, iterations);
-        if (std::abs(m.second) <= touch) add(m.first, tr.at(sp.piece, m.first), IntersectionKind::tangent);
+        if (std::abs(m.second) <= resolution) add(m.first, tr.at(sp.piece, m.first), IntersectionKind::tangent);
       }
       if (tr.failed()) return finish(tr.status, "intersect_plane: " + tr.message);
       if (static_cast<long>(out.points.size()) > options.max_points)
