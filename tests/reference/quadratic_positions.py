@@ -4,8 +4,9 @@
 Writes quadratic_positions.csv next to this file. Run: /usr/bin/python3 tests/reference/quadratic_positions.py
 
 Sweep: alpha in {-3, -1, 0.5, 3}, gamma in {-0.3, 0.3}, lambda = 1 (8 curves), at u = log kappa in {-2, 2} where s(u) is representable and |theta(u)| <= 100; plus the points of the issue's reproducer
-(alpha = -1.5, gamma = -0.3, lambda = 0.7 at s = -14.262385157871448), and two points of the long
-oracle campaign (a kink where kappa collapses; a point 003's hybrid inverse got wrong).
+(alpha = -1.5, gamma = -0.3, lambda = 0.7 at s = -14.262385157871448), and three points of the long
+oracle campaign (a kink where kappa collapses; a point 003's hybrid inverse got wrong; a point whose
+Gauss-Legendre estimate was below its error).
 Model as tests/reference/quadratic.py: u = log kappa, E(u) = gamma u^2 - alpha u,
 s(u) = -F_alpha(u)/lambda, theta(u) = -F_(alpha-1)(u)/lambda, F_a(u) = int_0^u e^(gamma t^2 - a t) dt
 in closed form (erfi / erfc at 40 digits); C(u) = -(1/lambda) int_0^u e^(i theta(t) + E(t)) dt by
@@ -96,10 +97,12 @@ for s in (-14.262385157871448, -7.0, -1.0):
     c = position(-1.5, -0.3, 0.7, u, -F(-2.5, -0.3, u) / 0.7)
     rows.append((-1.5, -0.3, 0.7, repr(s), fmt(c.real), fmt(c.imag)))
 
-# Long oracle campaign, seed 1 (docs/robustness.md O5): problem 10591, where κ falls by e^212 within
-# s < 1 and θ(s) levels off like a kink; problem 13494, wrong with 003's hybrid inverse of κ.
+# Long oracle campaign, seed 1 (docs/robustness.md O5, O6): problem 10591, where κ falls by e^212 within
+# s < 1 and θ(s) levels off like a kink; problem 13494, wrong with 003's hybrid inverse of κ;
+# problem 173630, where Gauss–Legendre's error estimate was below its error.
 for a, g, lam, s in ((-4.7279451547264051, 0.022357074941171895, 0.26475191131312015, 9.311269018225218),
-                     (4.4870616650235089, -0.20479128861518792, 0.73971898080129073, 7.5890931935710908)):
+                     (4.4870616650235089, -0.20479128861518792, 0.73971898080129073, 7.5890931935710908),
+                     (-3.4452652762090796, 0.4413428641506707, 1.3270049676310292, 6.145781829173643)):
     u = inverse_u(a, g, lam, s)
     c = position(a, g, lam, u, -F(a - 1, g, u) / lam)
     assert c is not None, (a, g, lam, s)
