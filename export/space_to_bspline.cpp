@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/space/certified_frenet.hpp"
 #include "lac/export/detail/hermite_bound.hpp"
 
 namespace lac {
@@ -69,16 +70,6 @@ HermiteSpanBound span_bound(const LaSpaceCurve& law, double s0, double s1, int d
   return detail::hermite_span_bound(s1 - s0, degree, M);
 }
 
-/// A Frenet integration with the given method and tolerances.
-OdeOptions frenet_ode(OdeMethod method, double rtol, double atol) {
-  OdeOptions o;
-  o.method = method;
-  o.rtol = rtol;
-  o.atol = atol;
-  o.max_steps = 1'000'000;
-  return o;
-}
-
 using Piece = std::vector<Vec3>;
 
 }  // namespace
@@ -114,9 +105,6 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   detail::HermiteBounds totals;  // user units
   bool all_g2 = p == 5;
   const auto& cps = curve.pieces();
-  // The finer and the coarser Frenet integration (header comment).
-  const OdeOptions fine = frenet_ode(OdeMethod::magnus6, 1e-13, 1e-14),
-                   coarse = frenet_ode(OdeMethod::rk45, 1e-10, 1e-11);
   for (size_t k = 0; k < cps.size(); ++k) {
     const SpacePiece& sp = cps[k];
     const LaSpaceCurve& law = sp.law;
@@ -128,29 +116,25 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
     if (!detail::split_hermite_spans(sp.s_begin, sp.s_end, target, cap, bound, ends, bounds))
       return fail(Status::max_iterations, "more than max_spans = " + std::to_string(options.max_spans) +
                                               " spans needed for tolerance " + format_number(tol));
-    Frame3 f_fine = sp.start, f_coarse = sp.start;
+    CertifiedFrame f{sp.start};
     double s_prev = sp.s_begin;
-    // End data: position, tangent, κN (standard form) and their error estimates (running maxima).
+    // End data: position, tangent, κN (standard form) and their proven error bounds.
     Vec3 p0 = sp.start.p, t0 = sp.start.t, n0 = law.kappa(sp.s_begin) * sp.start.n;
-    double dp0 = 0, dt0 = 0, dn0 = 0, dp = 0, dt = 0, dn = 0;
+    double dp0 = 0, dt0 = 0, dn0 = 0;
     for (size_t i = 0; i < ends.size(); ++i) {
       const double s1 = ends[i];
       const bool last = i + 1 == ends.size();
       const double h = s1 - s_prev;
-      for (auto [f, o] : {std::pair{&f_fine, &fine}, std::pair{&f_coarse, &coarse}}) {
-        const FrenetResult fr = integrate_frenet(law, *f, s_prev, s1, *o);
-        r.summary.evaluations += fr.evaluations;
-        if (fr.status != Status::ok || !fr.frame.p.allFinite())
-          return fail(Status::numerical_failure, "the Frenet integration of piece " + std::to_string(k) +
-                                                     " to s = " + format_number(s1) + " failed: " + fr.message);
-        *f = fr.frame;
-      }
+      f = integrate_frenet_certified(law, f.frame, s_prev, s1, f.position_error, f.frame_error);
+      r.summary.evaluations += f.steps;
+      if (f.status != Status::ok)
+        return fail(Status::numerical_failure, "the Frenet integration of piece " + std::to_string(k) + " to s = " +
+                                                   format_number(s1) + " failed: " + f.message);
+      // κ(s1) = e^(−log ρ) to a few ulps of 1 + |log ρ| (relative).
       const double kappa1 = law.kappa(s1);
-      dp = std::max(dp, (f_fine.p - f_coarse.p).norm());
-      dt = std::max(dt, (f_fine.t - f_coarse.t).norm());
-      dn = std::max(dn, kappa1 * (f_fine.n - f_coarse.n).norm());
-      Vec3 p1 = f_fine.p, t1 = f_fine.t, n1 = kappa1 * f_fine.n;
-      double dp1 = dp, dt1 = dt, dn1 = dn;
+      Vec3 p1 = f.frame.p, t1 = f.frame.t, n1 = kappa1 * f.frame.n;
+      double dp1 = f.position_error, dt1 = f.frame_error,
+             dn1 = kappa1 * (f.frame_error + 8 * DBL_EPSILON * (1 + std::abs(law.log_rho(s1))) * (1 + f.frame_error));
       const int degree = bounds[i].degree;
       const int next_degree = i + 1 < bounds.size() ? bounds[i + 1].degree : p;
       int cont = degree == 5 && next_degree == 5 ? 2 : 1;

@@ -217,6 +217,11 @@ void check_interval(const LaSpaceCurve& curve, double s0, double s1, const char*
 
 }  // namespace
 
+void detail::check_frenet_input(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1, const char* who) {
+  check_interval(curve, s0, s1, who);
+  check_start(start, who);
+}
+
 double Frame3::orthonormality_error() const {
   Eigen::Matrix3d f;
   f << t, n, b;
@@ -228,8 +233,7 @@ double cone_angle_of(const Vec3& p) { return std::atan2(std::hypot(p.y(), p.z())
 FrenetResult integrate_frenet(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1,
                               const OdeOptions& options) {
   options.validate();
-  check_interval(curve, s0, s1, "integrate_frenet");
-  check_start(start, "integrate_frenet");
+  detail::check_frenet_input(curve, start, s0, s1, "integrate_frenet");
   return Stepper{curve, options}.run(start, s0, s1, -1.0);
 }
 

@@ -59,4 +59,9 @@ std::vector<Frame3> sample_frenet(const LaSpaceCurve& curve, const Frame3& start
 /// angle(P, e_x) ∈ [0, π]; 0 at P = 0.
 double cone_angle_of(const Vec3& p);
 
+namespace detail {
+/// InputError unless start has finite coordinates, s0 lies in curve.s_range() and s0 ≤ s1 below its end.
+void check_frenet_input(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1, const char* who);
+}  // namespace detail
+
 }  // namespace lac
