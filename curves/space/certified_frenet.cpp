@@ -10,7 +10,7 @@ namespace lac {
 namespace {
 
 constexpr int kTerms = 24;          // G_0 … G_23 are summed; G_24 bounds the remainder
-constexpr long kMaxSteps = 100000;  // steps per call
+constexpr long kMaxSteps = 10000;  // steps per call
 constexpr int kMaxShrinks = 60;     // step reductions per step
 constexpr double kEps = DBL_EPSILON;
 

@@ -31,7 +31,7 @@ struct CertifiedFrame {
 /// Integrates from (s0, start) to s1 ≥ s0 inside curve.s_range() (InputError otherwise).
 /// `start_position_error`, `start_frame_error`: bounds on the start's own errors, carried along.
 /// Status max_iterations (no bound) when a step would need to shrink below 2^-60 of the range or
-/// more than 100000 steps are needed.
+/// more than 10000 steps are needed.
 CertifiedFrame integrate_frenet_certified(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1,
                                           double start_position_error = 0, double start_frame_error = 0);
 
