@@ -348,8 +348,9 @@ RunOutcome run_once(const Problem& pb, const Vec2& x0, long& ode_evals, const Od
 
 // Rough integration (rtol 1e-8) is a few times cheaper than the default 1e-10 and moves the end
 // tangent by ~1e-8 rad: a run first converges on it to kRoughTolerance (finite differences of
-// 1e-4, far above its noise), then is polished at the options' settings from there. A run that
-// does not converge (most runs on data without a curve) fails at the rough cost (Newton and Ceres).
+// 1e-4, far above its noise), then is polished at the options' settings from there. A run whose
+// rough phase stops farther than kRoughNear from the end tangent (most runs on data without a curve)
+// fails at the rough cost (Newton and Ceres); one that stops nearer is polished anyway.
 constexpr double kRoughRtol = 1e-8, kRoughTolerance = 1e-6, kRoughFdStep = 1e-4, kRoughNear = 1e-2;
 
 RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
