@@ -7,11 +7,14 @@
 # name without extension ends in `_timing`, contains `_bench`, or starts with `p002_appendix_a`.
 # They hold wall/CPU times and are skipped; every other file must regenerate byte-identically.
 #
-# Usage: scripts/check_reproducible.sh [BUILD_DIR]   (default: build)
+# Usage: scripts/check_reproducible.sh BUILD_DIR EXPERIMENT...   (the list is CMakeLists.txt's
+#        LAC_REPRODUCIBLE_EXPERIMENTS, which ctest passes)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-experiments=(integrator_accuracy planar_figures quadratic_figures g2_figures space_figures g1_hermite chain_figures export_lcg)
+[ $# -ge 2 ] || { echo "usage: check_reproducible.sh BUILD_DIR EXPERIMENT..." >&2; exit 2; }
+build=$(cd "$1" && pwd)
+shift
+experiments=("$@")
 
 is_timing() {
   local stem
