@@ -6,26 +6,17 @@
 #include <cmath>
 #include <limits>
 
+#include "lac/curves/detail/taylor_frame.hpp"
+
 namespace lac {
 namespace {
 
-constexpr int kTerms = 24;          // G_0 … G_23 are summed; G_24 bounds the remainder
-constexpr long kMaxSteps = 10000;  // steps per call
-constexpr int kMaxShrinks = 60;     // step reductions per step
+constexpr int kTerms = detail::kTaylorTerms;
 constexpr double kEps = DBL_EPSILON;
 
-using M3 = Eigen::Matrix3d;
-
-/// Scaled Taylor coefficients of κ and τ over a step of size h from s: κ^(i)(s)/i! · h^(i+1)
-/// (and τ's), i = 0 … kTerms − 1, from logarithms so that no factor overflows on its own; and a
-/// bound on their relative rounding.
-struct LawSeries {
-  std::array<double, kTerms> kappa{}, tau{};
-  std::array<double, kTerms> relative_error{};  ///< of κ_i and τ_i (the larger)
-};
-
-LawSeries law_series(const LaSpaceCurve& c, double s, double h) {
-  LawSeries out;
+/// κ_i, τ_i of the law from logarithms so that no factor overflows on its own.
+detail::FrameSeries law_series(const LaSpaceCurve& c, double s, double h) {
+  detail::FrameSeries out;
   const double lr = c.log_rho(s), lm = c.log_mu(s), lh = std::log(h);
   // κ' = −Λκ^(1+α), τ' = −σΩτ^(1+β) (σ = +1 type 1, −1 type 2): docs/export.md.
   const double sk = -1.0, st = c.type() == TorsionType::type1 ? -1.0 : 1.0;
@@ -49,26 +40,6 @@ LawSeries law_series(const LaSpaceCurve& c, double s, double h) {
   return out;
 }
 
-/// K's scaled coefficient matrix from κ_i, τ_i: F' = F K, K = [[0, −κ, 0], [κ, 0, −τ], [0, τ, 0]].
-M3 generator(double k, double t) {
-  M3 m;
-  m << 0, -k, 0, k, 0, -t, 0, t, 0;
-  return m;
-}
-
-/// G_0 … G_n from K's scaled coefficients (G_{j+1} = Σ_{i≤j} G_i K_{j−i} / (j + 1), G_0 = I).
-template <class Coefficient>
-std::array<M3, kTerms + 1> propagator_series(Coefficient&& K) {
-  std::array<M3, kTerms + 1> G;
-  G[0] = M3::Identity();
-  for (int j = 0; j < kTerms; ++j) {
-    M3 sum = M3::Zero();
-    for (int i = 0; i <= j; ++i) sum += G[i] * K(j - i);
-    G[j + 1] = sum / (j + 1.0);
-  }
-  return G;
-}
-
 }  // namespace
 
 CertifiedFrame integrate_frenet_certified(const LaSpaceCurve& curve, const Frame3& start, double s0, double s1,
@@ -79,98 +50,18 @@ CertifiedFrame integrate_frenet_certified(const LaSpaceCurve& curve, const Frame
     throw_input_error(who, "start_position_error", start_position_error, "[0, inf)");
   if (!(start_frame_error >= 0) || !std::isfinite(start_frame_error))
     throw_input_error(who, "start_frame_error", start_frame_error, "[0, inf)");
-  CertifiedFrame r;
-  r.position_error = start_position_error;
-  r.frame_error = start_frame_error;
-  M3 F;
+  Eigen::Matrix3d F;
   F << start.t, start.n, start.b;
-  Vec3 P = start.p;
-  double s = s0;
-  double h = s1 - s0;
-  const double min_step = std::ldexp(s1 - s0, -60);
-  while (s < s1) {
-    if (r.steps >= kMaxSteps) {
-      r.status = Status::max_iterations;
-      r.message = std::string(who) + ": more than " + std::to_string(kMaxSteps) + " steps needed";
-      return r;
-    }
-    h = std::min(h, s1 - s);
-    std::array<M3, kTerms + 1> G, Ghat;
-    LawSeries at;
-    double frame_remainder = 0, position_remainder = 0;
-    for (int shrink = 0;; ++shrink) {
-      const double end = h == s1 - s ? s1 : s + h;
-      at = law_series(curve, s, h);
-      const LawSeries far = law_series(curve, end, h);
-      G = propagator_series([&](int i) -> M3 { return generator(at.kappa[i], at.tau[i]); });
-      // |κ^(i)|, |τ^(i)| on the step: largest at one of its ends (powers of the monotone ρ, μ).
-      Ghat = propagator_series([&](int i) -> M3 {
-        return generator(std::max(std::abs(at.kappa[i]), std::abs(far.kappa[i])),
-                         std::max(std::abs(at.tau[i]), std::abs(far.tau[i])))
-            .cwiseAbs();
-      });
-      frame_remainder = Ghat[kTerms].norm();
-      position_remainder = h * Ghat[kTerms].col(0).norm() / (kTerms + 1);
-      // Remainders far below rounding (an eighth of an ulp of the unit frame and of the step).
-      if (frame_remainder <= kEps / 8 && std::isfinite(frame_remainder) && std::isfinite(position_remainder)) break;
-      if (shrink == kMaxShrinks || !(h > min_step)) {
-        r.status = Status::max_iterations;
-        r.message = std::string(who) + ": no step from s = " + format_number(s) +
-                    " keeps the Taylor remainder below rounding (the step shrank to " + format_number(h) + ")";
-        return r;
-      }
-      const double ratio = std::isfinite(frame_remainder) ? std::pow(kEps / 8 / frame_remainder, 1.0 / kTerms) : 0.1;
-      h *= std::clamp(0.9 * ratio, 0.1, 0.9);
-    }
-    // The step's propagator and its displacement ∫₀¹ G(x) e₁ dx (scaled), with their rounding: a
-    // majorant E_j of |computed G_j − G_j| by the recursion's own rule, from the coefficients'
-    // relative errors and (j + 3)ε per entry of each sum of products.
-    std::array<M3, kTerms> K_abs, dK, G_abs, E;
-    for (int i = 0; i < kTerms; ++i) {
-      K_abs[i] = generator(at.kappa[i], at.tau[i]).cwiseAbs();
-      dK[i] = at.relative_error[i] * K_abs[i];
-      G_abs[i] = G[i].cwiseAbs();
-    }
-    E[0] = M3::Zero();
-    for (int j = 0; j + 1 < kTerms; ++j) {
-      M3 carried = M3::Zero(), size = M3::Zero();
-      for (int i = 0; i <= j; ++i) {
-        carried += E[i] * K_abs[j - i] + G_abs[i] * dK[j - i];
-        size += G_abs[i] * K_abs[j - i];
-      }
-      E[j + 1] = (carried + (j + 4) * kEps * size) / (j + 1.0);
-    }
-    M3 step = M3::Zero(), step_error = M3::Zero(), step_size = M3::Zero();
-    Vec3 moved = Vec3::Zero(), moved_error = Vec3::Zero(), moved_size = Vec3::Zero();
-    for (int j = 0; j < kTerms; ++j) {
-      step += G[j];
-      moved += G[j].col(0) / (j + 1.0);
-      step_error += E[j];
-      step_size += G_abs[j];
-      moved_error += E[j].col(0) / (j + 1.0);
-      moved_size += G_abs[j].col(0) / (j + 1.0);
-    }
-    // Summing kTerms terms, then F · step (3-term dot products): (kTerms + 8)ε of the sizes.
-    const double rounding = step_error.norm() + (kTerms + 8) * kEps * step_size.norm();
-    const double rounding_moved = moved_error.norm() + (kTerms + 8) * kEps * moved_size.norm();
-    const double delta = r.frame_error;
-    const M3 F_next = F * step;
-    const Vec3 P_next = P + h * (F * moved);
-    // Exact propagators are orthogonal: errors are carried without growth (header comment).
-    r.frame_error = delta + (1 + delta) * (frame_remainder + rounding);
-    r.position_error += delta * h + (1 + delta) * (position_remainder + h * rounding_moved) + 2 * kEps * P_next.norm();
-    F = F_next;
-    P = P_next;
-    s = h == s1 - s ? s1 : s + h;
-    ++r.steps;
-    h *= 1.5;
-    if (!F.allFinite() || !P.allFinite() || !std::isfinite(r.frame_error) || !std::isfinite(r.position_error)) {
-      r.status = Status::numerical_failure;
-      r.message = std::string(who) + ": non-finite frame at s = " + format_number(s);
-      return r;
-    }
-  }
-  r.frame = {P, F.col(0), F.col(1), F.col(2)};
+  const detail::TaylorFrame t = detail::integrate_taylor_frame(
+      [&](double s, double h) { return law_series(curve, s, h); }, F, start.p, s0, s1, start_position_error,
+      start_frame_error, who);
+  CertifiedFrame r;
+  r.frame = {t.position, t.frame.col(0), t.frame.col(1), t.frame.col(2)};
+  r.position_error = t.position_error;
+  r.frame_error = t.frame_error;
+  r.steps = t.steps;
+  r.status = t.status;
+  r.message = t.message;
   return r;
 }
 
