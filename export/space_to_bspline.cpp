@@ -116,7 +116,8 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
     if (!detail::split_hermite_spans(sp.s_begin, sp.s_end, target, cap, bound, ends, bounds))
       return fail(Status::max_iterations, "more than max_spans = " + std::to_string(options.max_spans) +
                                               " spans needed for tolerance " + format_number(tol));
-    CertifiedFrame f{sp.start};
+    CertifiedFrame f;
+    f.frame = sp.start;
     double s_prev = sp.s_begin;
     // End data: position, tangent, κN (standard form) and their proven error bounds.
     Vec3 p0 = sp.start.p, t0 = sp.start.t, n0 = law.kappa(sp.s_begin) * sp.start.n;

@@ -8,9 +8,9 @@
 #include <limits>
 
 #include "lac/common/error.hpp"
+#include "lac/curves/planar/certified_position.hpp"
 #include "lac/export/detail/hermite_bound.hpp"
 #include "lac/export/write.hpp"
-#include "lac/integrators/quadrature.hpp"
 
 namespace lac {
 
@@ -271,7 +271,7 @@ ExportResult certified_bspline_once(const std::vector<const SpanSource*>& parts,
     const double s_base = starts[k];
     const double part_length = starts[k + 1] - starts[k];
     // The part's first point, tangent and c'' = iκ e^{iθ}: the first part's start (a segment's own
-    // start, exact, or a quadrature), else the previous part's last span's end (which the previous
+    // start, exact, or an integration), else the previous part's last span's end (which the previous
     // part took from this one's start).
     std::complex<double> p0 = p_first;
     double err0 = err_first;
@@ -404,25 +404,24 @@ class SegmentSource final : public detail::SpanSource {
   double kappa(double u) const override { return seg_.kappa_at(local_s(u)); }
   detail::SpanEndPosition position(double u) const override {
     if (u == seg_.ua()) return {seg_.start(), 0.0, 0, Status::ok, ""};  // exact
-    // Two independent quadratures (adaptive Gauss–Kronrod, and the default Gauss–Legendre): the
-    // position is Gauss–Kronrod's, its error the larger of its estimate and the two's difference,
-    // so that one method's estimate missing its error (e.g. κ ∝ |q|^(−1/α) with α near 0 steep
-    // at an inflection) shows up as a disagreement.
-    const double s = local_s(u);
-    const PositionResult pk = position_at(seg_, s, GaussKronrod{});
-    const PositionResult pr = position_at(seg_, s);
-    detail::SpanEndPosition e{pk.point.position,
-                              std::max({pk.error_estimate, pr.error_estimate, std::abs(pk.point.position - pr.point.position)}),
-                              pk.evaluations + pr.evaluations, Status::ok, ""};
-    for (const PositionResult* x : {&pk, &pr})
-      if (!usable(x->status)) e.status = x->status, e.message = x->message;
-    return e;
+    // Proven (curves/planar/certified_position.hpp), continued from the last position asked for:
+    // span ends come in increasing u.
+    if (!(u >= last_.u)) last_ = {seg_.ua(), seg_.start(), 0.0};
+    const CertifiedPoint p = position_certified(seg_, last_.u, last_.position, last_.error, u);
+    if (p.status == Status::ok) last_ = {u, p.position, p.error};
+    return {p.position, p.error, p.steps, p.status, p.message};
   }
   double theta_scale() const override { return std::max(std::abs(seg_.theta_start()), std::abs(seg_.theta_end())); }
 
  private:
   double local_s(double u) const { return u == seg_.ub() ? seg_.length() : std::min(seg_.length(), arc(u)); }
   const LaSegment& seg_;
+  struct Known {
+    double u;
+    std::complex<double> position;
+    double error;
+  };
+  mutable Known last_{seg_.ua(), seg_.start(), 0.0};
 };
 
 std::vector<detail::MonotoneStretch> stretches_of(const PlanarCurve& curve) {
