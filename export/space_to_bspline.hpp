@@ -43,9 +43,9 @@ namespace lac {
 
 struct SpaceExportInfo {
   double tolerance = 0;      ///< the tolerance used (absolute)
-  double max_deviation = 0;  ///< bound on |c(s) − b(s)| (absolute): interpolation (proven) + positions (estimated)
+  double max_deviation = 0;  ///< proven bound on |c(s) − b(s)| (absolute): interpolation + end data
   double interpolation = 0;  ///< the largest interpolation bound of a span (proven part)
-  double positions = 0;      ///< the largest end-data term (integration estimate, joint gaps, rounding)
+  double positions = 0;      ///< the largest end-data term (proven integration bound, joint gaps, rounding)
   long spans = 0;
   std::string continuity = "G1";  ///< at every knot (C1, or C2 for G2, in the arc-length parameter)
 };

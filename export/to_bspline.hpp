@@ -18,7 +18,7 @@
 // h⁴/384 M₄, h³/96 M₃, h²/16 |κ|; quintic: h⁶/46080 M₆ … 0.0062 h³ M₃). On a span without an
 // inflection each |κ^(j)| is a monotone function of s (a power of the LA law's t), so its largest
 // value is at an end; where κ' is unbounded (α < −1 at an inflection) a quintic span is the cubic
-// one raised to degree 5. Added: the end positions' quadrature error estimates, the chain's joint
+// one raised to degree 5. Added: the end positions' proven integration bounds, the chain's joint
 // gaps (position, tangent, curvature) and rounding. The B-spline is within max_deviation of the
 // curve at the same arc length, hence in Hausdorff distance.
 //
@@ -47,11 +47,13 @@ struct ExportOptions {
   /// 5: quintic Hermite spans (c, c', c'' at the ends), C2 in arc length inside each LA segment and
   /// at G2 joints, so the curvature is continuous (G2); 3: cubic Hermite spans, C1 (G1).
   int degree = 5;
-  /// Remove knots inside each LA segment within the tolerance (export/detail/hermite_bound.hpp,
-  /// remove_knots_within): the Hermite spans are then built to 1/10 of the tolerance and the knots
-  /// they do not need are removed with a certified bound, leaving a smoother B-spline (C4 for the
-  /// quintic, C2 for the cubic, at the remaining interior knots) with fewer control points. The
-  /// joints between segments stay knots of their multiplicity. false: the Hermite spans' knots.
+  /// Reduce the control points within the tolerance: the Hermite spans are built to 1/10 of the
+  /// tolerance, then the knots they do not need are removed with a certified bound
+  /// (export/detail/hermite_bound.hpp, remove_knots_within), or, where it needs fewer points, a
+  /// least-squares fit with simple knots and a proven distance replaces them
+  /// (export/detail/bspline_fit.hpp); either is smoother (C4 for the quintic, C2 for the cubic,
+  /// inside each LA segment). The joints between segments stay knots of their multiplicity; the
+  /// ends keep the curve's end data. false: the Hermite spans' knots.
   bool remove_knots = true;
 };
 
@@ -59,7 +61,7 @@ struct ExportInfo {
   double tolerance = 0;        ///< the tolerance used (absolute)
   double max_deviation = 0;    ///< certified bound on |c(s) − b(s)| (absolute), see above
   double interpolation = 0;    ///< the largest interpolation bound of a span (proven part)
-  double positions = 0;        ///< the largest end-position term (quadrature estimates, joint gaps)
+  double positions = 0;        ///< the largest end-position term (proven integration bounds, joint gaps, rounding)
   long spans = 0;
   /// Whether the B-spline's curvature is monotone, in the LA curvature's direction, on every LA
   /// segment whose curvature changes (by more than 1e-9 of its scale): proven, with a slack of

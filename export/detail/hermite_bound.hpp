@@ -23,6 +23,7 @@
 #include "lac/common/error.hpp"
 #include "lac/common/status.hpp"
 #include "lac/common/summary.hpp"
+#include "lac/export/detail/bspline_fit.hpp"
 #include "lac/export/to_bspline.hpp"
 
 namespace lac::detail {
@@ -347,8 +348,56 @@ void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& piece
   double deviation = bounds.deviation;
   check(r.curve, r.info);
   if (reduce && deviation <= tol) {
+    const std::vector<double> UH = r.curve.knots;
+    const std::vector<P> PH = r.curve.control_points;
     deviation = remove_knots_within(p, r.curve.knots, r.curve.control_points, knots, bounds.span_deviation, fixed, tol);
     check(r.curve, r.info);
+    // A least-squares fit with fewer points within the tolerance (export/detail/bspline_fit.hpp):
+    // the fewest spans whose proven bound holds, found by doubling and bisection; taken when it
+    // keeps the curvature monotone wherever the knot removal's result does.
+    const size_t removed_points = r.curve.control_points.size();
+    auto points_of = [&](long n) { return fit_bspline(p, UH, PH, knots, bounds.span_deviation, fixed, n); };
+    FittedBSpline<P> best;
+    long lo = 0, hi = 0, upper = 0;  // lo fails (or 0), hi the best success (or 0), upper ≥ hi
+    for (long n = 1; n <= 2 * static_cast<long>(removed_points); n *= 2) {
+      FittedBSpline<P> f = points_of(n);
+      if (f.points.size() >= removed_points) {
+        upper = n;
+        break;
+      }
+      if (f.deviation <= tol) {
+        best = std::move(f);
+        hi = upper = n;
+        break;
+      }
+      lo = n;
+    }
+    while (upper > lo + 1) {
+      const long mid = lo + (upper - lo) / 2;
+      FittedBSpline<P> f = points_of(mid);
+      if (f.deviation <= tol && (hi == 0 || f.points.size() < best.points.size())) {
+        best = std::move(f);
+        hi = upper = mid;
+      } else if (f.deviation <= tol) {
+        upper = mid;
+      } else {
+        lo = mid;
+      }
+    }
+    if (hi > 0 && best.points.size() < removed_points) {
+      auto candidate = r.curve;
+      candidate.knots = best.knots;
+      candidate.control_points = best.points;
+      auto info = r.info;
+      check(candidate, info);
+      bool keeps = true;
+      if constexpr (requires { info.curvature_monotone; }) keeps = info.curvature_monotone || !r.info.curvature_monotone;
+      if (keeps) {
+        r.curve = std::move(candidate);
+        r.info = info;
+        deviation = best.deviation;
+      }
+    }
   }
   r.info.max_deviation = deviation;
   r.info.spans = 0;

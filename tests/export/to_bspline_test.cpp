@@ -96,11 +96,12 @@ void check_structure(int degree) {
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveCubic) { check_structure(3); }
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveQuintic) { check_structure(5); }
 
-// Knot removal (the default): fewer control points than the Hermite spans at the same tolerance,
-// the joints kept with their multiplicity, the knots inside the segments simple where removed;
+// Reduction (the default: knot removal, or a least-squares fit with a proven bound where it needs
+// fewer points): fewer control points than the Hermite spans at the same tolerance, the joints kept
+// with their multiplicity, the knots inside the segments simple;
 // the bound certified (measured ≤ bound ≤ tolerance) and the quintic's curvature still monotone
 // and continuous.
-TEST(ToBspline, KnotRemovalKeepsTheJointsAndTheBound) {
+TEST(ToBspline, ReductionKeepsTheJointsAndTheBound) {
   const PlanarCurve c = acceptance_curve();
   for (int degree : {3, 5})
     for (double tol : {1e-3, 1e-6, 1e-9}) {
@@ -123,7 +124,8 @@ TEST(ToBspline, KnotRemovalKeepsTheJointsAndTheBound) {
       }
       int simple = 0;
       for (size_t i = 1; i + 1 < m.size(); ++i) simple += m[i] == 1;
-      EXPECT_GT(simple, 0) << "degree " << degree << " tol " << tol;
+      // Simple knots inside the segments, unless each segment is one span.
+      EXPECT_TRUE(simple > 0 || r.info.spans == static_cast<long>(c.segments().size())) << "degree " << degree << " tol " << tol;
       if (degree == 5) {
         // At 1e-3 the quintic's curvature wiggles against the LA direction near the inflection by up
         // to 6e-7 (dense sampling), in the Hermite spans too: the proven check says so; at 1e-6
@@ -192,7 +194,7 @@ TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
     ++tested;
   }
   EXPECT_GT(tested, n * 9 / 10);
-  std::printf("%d curves (%d more inaccurate by their positions); largest measured / bound = %.3g\n", tested,
+  std::printf("%d curves (%d more inaccurate by their positions); largest measured / bound = %.6g\n", tested,
               position_limited, max_ratio);
 }
 
