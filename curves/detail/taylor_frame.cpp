@@ -39,7 +39,19 @@ std::array<M3, kTerms + 1> propagator_series(Coefficient&& K) {
 
 }  // namespace
 
-TaylorFrame integrate_taylor_frame(const std::function<FrameSeries(double s, double h)>& series, const M3& frame,
+FrameMajorantFunction end_majorant(FrameSeriesFunction series) {
+  return [series = std::move(series)](double s0, double s1, double h) {
+    const FrameSeries a = series(s0, h), b = series(s1, h);
+    FrameMajorant m;
+    for (int i = 0; i < kTerms; ++i) {
+      m.kappa[i] = std::max(std::abs(a.kappa[i]), std::abs(b.kappa[i]));
+      m.tau[i] = std::max(std::abs(a.tau[i]), std::abs(b.tau[i]));
+    }
+    return m;
+  };
+}
+
+TaylorFrame integrate_taylor_frame(const FrameSeriesFunction& series, const FrameMajorantFunction& majorant, const M3& frame,
                                    const Vec3& position, double s0, double s1, double position_error,
                                    double frame_error, const char* who) {
   TaylorFrame r;
@@ -62,15 +74,9 @@ TaylorFrame integrate_taylor_frame(const std::function<FrameSeries(double s, dou
     double frame_remainder = 0, position_remainder = 0;
     for (int shrink = 0;; ++shrink) {
       const double end = h == s1 - s ? s1 : s + h;
-      at = series(s, h);
-      const FrameSeries far = series(end, h);
-      G = propagator_series([&](int i) -> M3 { return generator(at.kappa[i], at.tau[i]); });
-      // |κ^(i)|, |τ^(i)| on the step: largest at one of its ends (powers of the monotone ρ, μ).
-      Ghat = propagator_series([&](int i) -> M3 {
-        return generator(std::max(std::abs(at.kappa[i]), std::abs(far.kappa[i])),
-                         std::max(std::abs(at.tau[i]), std::abs(far.tau[i])))
-            .cwiseAbs();
-      });
+      const FrameMajorant most = majorant(s, end, h);
+      // The majorant's coefficients through the same recursion bound G's on the whole step.
+      Ghat = propagator_series([&](int i) -> M3 { return generator(most.kappa[i], most.tau[i]).cwiseAbs(); });
       frame_remainder = Ghat[kTerms].norm();
       position_remainder = h * Ghat[kTerms].col(0).norm() / (kTerms + 1);
       // Remainders far below rounding (an eighth of an ulp of the unit frame and of the step).
@@ -84,13 +90,15 @@ TaylorFrame integrate_taylor_frame(const std::function<FrameSeries(double s, dou
       const double ratio = std::isfinite(frame_remainder) ? std::pow(kEps / 8 / frame_remainder, 1.0 / kTerms) : 0.1;
       h *= std::clamp(0.9 * ratio, 0.1, 0.9);
     }
+    at = series(s, h);
+    G = propagator_series([&](int i) -> M3 { return generator(at.kappa[i], at.tau[i]); });
     // The step's propagator and its displacement ∫₀¹ G(x) e₁ dx (scaled), with their rounding: a
     // majorant E_j of |computed G_j − G_j| by the recursion's own rule, from the coefficients'
-    // relative errors and (j + 3)ε per entry of each sum of products.
+    // errors and (j + 3)ε per entry of each sum of products.
     std::array<M3, kTerms> K_abs, dK, G_abs, E;
     for (int i = 0; i < kTerms; ++i) {
       K_abs[i] = generator(at.kappa[i], at.tau[i]).cwiseAbs();
-      dK[i] = at.relative_error[i] * K_abs[i];
+      dK[i] = generator(at.kappa_error[i], at.tau_error[i]).cwiseAbs();
       G_abs[i] = G[i].cwiseAbs();
     }
     E[0] = M3::Zero();

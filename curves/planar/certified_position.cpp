@@ -69,7 +69,7 @@ detail::FrameSeries planar_series(const LaSegment& seg, double u, double h) {
     // d log|k^(i)|/dq = D(1 + iα) (both forms): zero where k^(i) does not depend on q (α = −1, i = 1).
     const double e = std::abs(c.dlogk_dq * (1 + i * law.alpha)) * delta_q +
                      4 * kEps * (std::abs(c.log_k) + std::abs(gi) + abs_log_prod + log_fact + (i + 1) * (1 + std::abs(lh)) + i + 1);
-    out.relative_error[i] = std::expm1(e) + 4 * kEps;
+    out.kappa_error[i] = (std::expm1(e) + 4 * kEps) * std::abs(out.kappa[i]);
     const double f = 1.0 + i * law.alpha;
     log_prod += std::log(std::abs(f));
     abs_log_prod += std::abs(std::log(std::abs(f)));
@@ -135,8 +135,8 @@ CertifiedTangentIntegral integrate_tangent_certified(const LaSegment& seg, doubl
       r.error += len * (len * zone_kappa + dphi + 2 * kEps);
       continue;
     }
-    const detail::TaylorFrame t = detail::integrate_taylor_frame(
-        [&](double u, double h) { return planar_series(seg, u, h); }, plane_frame(phi), Eigen::Vector3d::Zero(),
+    const detail::FrameSeriesFunction series = [&](double u, double h) { return planar_series(seg, u, h); };
+    const detail::TaylorFrame t = detail::integrate_taylor_frame(series, detail::end_majorant(series), plane_frame(phi), Eigen::Vector3d::Zero(),
         piece.a, piece.b, 0.0, std::sqrt(2.0) * dphi + 4 * kEps, who);
     r.steps += t.steps;
     if (t.status != Status::ok) {

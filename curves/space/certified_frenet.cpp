@@ -28,7 +28,9 @@ detail::FrameSeries law_series(const LaSpaceCurve& c, double s, double h) {
     out.tau[i] = sign_t * std::exp(log_ct - (1 + i * c.beta()) * lm + (i + 1) * lh);
     // Each exponent's rounding: its terms' ulps, log ρ and log μ to a few ulps of 1 + |·|.
     const double ak = std::abs(1 + i * c.alpha()), at = std::abs(1 + i * c.beta()), ah = (i + 1) * (1 + std::abs(lh));
-    out.relative_error[i] = 8 * kEps * (2 * i + 2 + std::max(abs_k + ak * (1 + std::abs(lr)), abs_t + at * (1 + std::abs(lm))) + ah);
+    const double relative = 8 * kEps * (2 * i + 2 + std::max(abs_k + ak * (1 + std::abs(lr)), abs_t + at * (1 + std::abs(lm))) + ah);
+    out.kappa_error[i] = relative * std::abs(out.kappa[i]);
+    out.tau_error[i] = relative * std::abs(out.tau[i]);
     const double fk = 1 + i * c.alpha(), ft = 1 + i * c.beta(), lf = std::log(i + 1.0);
     log_ck += llam + std::log(std::abs(fk)) - lf;  // −inf once Λ = 0 or 1 + iα = 0: the rest are 0
     log_ct += lom + std::log(std::abs(ft)) - lf;
@@ -52,8 +54,8 @@ CertifiedFrame integrate_frenet_certified(const LaSpaceCurve& curve, const Frame
     throw_input_error(who, "start_frame_error", start_frame_error, "[0, inf)");
   Eigen::Matrix3d F;
   F << start.t, start.n, start.b;
-  const detail::TaylorFrame t = detail::integrate_taylor_frame(
-      [&](double s, double h) { return law_series(curve, s, h); }, F, start.p, s0, s1, start_position_error,
+  const detail::FrameSeriesFunction series = [&](double s, double h) { return law_series(curve, s, h); };
+  const detail::TaylorFrame t = detail::integrate_taylor_frame(series, detail::end_majorant(series), F, start.p, s0, s1, start_position_error,
       start_frame_error, who);
   CertifiedFrame r;
   r.frame = {t.position, t.frame.col(0), t.frame.col(1), t.frame.col(2)};

@@ -5,12 +5,12 @@
 // The fit B has H's degree p, simple knots inside each smooth part (C^(p−1)), uniform in arc length,
 // and at the joints of the curve's parts H's knot multiplicity (the continuity the curve has there).
 // Its first and last points, tangents and (p ≥ 5) second derivatives are H's, so B keeps the curve's
-// end data. The distance |B(t) − H(t)| is bounded exactly: both are refined by knot insertion
-// (Boehm) to Bézier pieces on the union of their knots, and the difference of two Bézier pieces of
+// end data. The distance |B(t) − H(t)| is bounded exactly: both are written as Bézier pieces (by
+// blossoming) on the union of their knots, and the difference of two Bézier pieces of
 // one degree on one interval is at most the largest distance of their control points (the
 // Bernstein basis is a nonnegative partition of unity). With H's own certified bound on each of its
 // spans the triangle inequality gives B's. Written by hand: the fitting and refinement are the
-// textbook algorithms (The NURBS Book A2.2, A5.1, §9.4.1); Eigen solves the normal equations.
+// textbook algorithms (The NURBS Book A2.2, §5.3, §9.4.1); Eigen solves the normal equations.
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cfloat>
@@ -44,38 +44,38 @@ double fit_point_norm(const V& a) {
   return a.norm();
 }
 
-/// Inserts u once (Boehm; The NURBS Book A5.1 with r = 1); u strictly inside the parameter range.
+/// The blossom of the B-spline's piece on knot span k (U[k] < U[k+1]) at t[0], …, t[p − 1]: de Boor's
+/// algorithm with level r taking its own argument t[r − 1] (The NURBS Book §5.3; Ramshaw).
 template <class P>
-void insert_knot(int p, std::vector<double>& U, std::vector<P>& pts, double u) {
-  const size_t k = static_cast<size_t>(std::upper_bound(U.begin(), U.end(), u) - U.begin()) - 1;
-  size_t s = 0;
-  while (s <= k && U[k - s] == u) ++s;
-  std::vector<P> q(pts.size() + 1);
-  const size_t lo = k - static_cast<size_t>(p) + 1, hi = k - s;
-  for (size_t i = 0; i < lo; ++i) q[i] = pts[i];
-  for (size_t i = lo; i <= hi; ++i) {
-    const double a = (u - U[i]) / (U[i + static_cast<size_t>(p)] - U[i]);
-    q[i] = a * pts[i] + (1 - a) * pts[i - 1];
-  }
-  for (size_t i = hi + 1; i < q.size(); ++i) q[i] = pts[i - 1];
-  pts.swap(q);
-  U.insert(U.begin() + static_cast<std::ptrdiff_t>(k) + 1, u);
+P blossom(int p, const std::vector<double>& U, const std::vector<P>& pts, size_t k, const double* t) {
+  std::vector<P> d(pts.begin() + static_cast<std::ptrdiff_t>(k - p), pts.begin() + static_cast<std::ptrdiff_t>(k + 1));
+  for (int r = 1; r <= p; ++r)
+    for (int i = p; i >= r; --i) {
+      const size_t lo = k - p + i;
+      const double a = (t[r - 1] - U[lo]) / (U[k + 1 + i - r] - U[lo]);
+      d[i] = (1 - a) * d[i - 1] + a * d[i];
+    }
+  return d[p];
 }
 
 /// The Bézier pieces (p + 1 points each) of the B-spline on the intervals between consecutive
-/// `breaks` (sorted, distinct, from t_min to t_max, holding every distinct knot in between).
+/// `breaks` (sorted, distinct, from t_min to t_max, holding every distinct knot in between): point i
+/// of the piece on [x0, x1] is the blossom at (x0 × (p − i), x1 × i).
 template <class P>
-std::vector<std::vector<P>> bezier_pieces_on(int p, std::vector<double> U, std::vector<P> pts,
+std::vector<std::vector<P>> bezier_pieces_on(int p, const std::vector<double>& U, const std::vector<P>& pts,
                                              const std::vector<double>& breaks) {
-  for (size_t j = 1; j + 1 < breaks.size(); ++j) {
-    const double u = breaks[j];
-    const auto range = std::equal_range(U.begin(), U.end(), u);
-    for (auto m = range.second - range.first; m < p; ++m) insert_knot(p, U, pts, u);
-  }
   std::vector<std::vector<P>> out(breaks.size() - 1);
-  for (size_t j = 0; j < out.size(); ++j)
-    out[j].assign(pts.begin() + static_cast<std::ptrdiff_t>(j * p),
-                  pts.begin() + static_cast<std::ptrdiff_t>(j * p + p + 1));
+  std::vector<double> t(p);
+  for (size_t j = 0; j < out.size(); ++j) {
+    const double x0 = breaks[j], x1 = breaks[j + 1], mid = 0.5 * (x0 + x1);
+    size_t k = static_cast<size_t>(std::upper_bound(U.begin(), U.end(), mid) - U.begin()) - 1;
+    k = std::min(k, U.size() - p - 2);
+    out[j].resize(p + 1);
+    for (int i = 0; i <= p; ++i) {
+      for (int r = 0; r < p; ++r) t[r] = r < p - i ? x0 : x1;
+      out[j][i] = blossom(p, U, pts, k, t.data());
+    }
+  }
   return out;
 }
 
@@ -276,7 +276,7 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
       e = std::max(e, fit_point_norm(P(pb[j][i] - ph[j][i])));
       size = std::max(size, fit_point_norm(pb[j][i]) + fit_point_norm(ph[j][i]));
     }
-    // Rounding of the insertions (convex combinations, at most p per break on each side).
+    // Rounding of the blossoms (p levels of convex combinations).
     e += (64 + 8 * p * p) * DBL_EPSILON * size;
     const double mid = 0.5 * (breaks[j] + breaks[j + 1]);
     size_t k = static_cast<size_t>(std::upper_bound(span_knots.begin(), span_knots.end(), mid) - span_knots.begin());

@@ -1,5 +1,5 @@
-// The least-squares reduction of the certified export (export/detail/bspline_fit.hpp): knot
-// insertion keeps the curve, the Bézier pieces reproduce it, and the fit's proven distance to the
+// The least-squares reduction of the certified export (export/detail/bspline_fit.hpp): the Bézier
+// pieces (blossoms) on breaks that are not knots reproduce the B-spline, and the fit's proven distance to the
 // Hermite B-spline H is never below the distance measured densely, on random chains.
 #include <gtest/gtest.h>
 
@@ -20,16 +20,13 @@ BSpline hermite(const PlanarCurve& c, double tol, int degree) {
   return h.curve;
 }
 
-TEST(BsplineFit, KnotInsertionAndBezierPiecesKeepTheCurve) {
+TEST(BsplineFit, BezierPiecesByBlossomingReproduceTheCurve) {
   std::mt19937_64 rng(7);
   const PlanarCurve c = test::random_chain(rng);
   for (int p : {3, 5}) {
     const BSpline b = hermite(c, 1e-6 * c.length(), p);
-    BSpline refined = b;
     const double a = b.t_min(), e = b.t_max();
-    for (double f : {0.137, 0.5, 0.5, 0.81}) detail::insert_knot(p, refined.knots, refined.control_points, a + f * (e - a));
-    refined.validate();
-    std::vector<double> breaks{a, a + 0.3 * (e - a), e};
+    std::vector<double> breaks{a, a + 0.137 * (e - a), a + 0.3 * (e - a), a + 0.81 * (e - a), e};
     for (double k : b.knots)
       if (k > a && k < e) breaks.push_back(k);
     std::sort(breaks.begin(), breaks.end());
@@ -38,7 +35,6 @@ TEST(BsplineFit, KnotInsertionAndBezierPiecesKeepTheCurve) {
     ASSERT_EQ(pieces.size(), breaks.size() - 1);
     for (int i = 0; i <= 400; ++i) {
       const double t = a + (e - a) * i / 400.0;
-      EXPECT_LT(std::abs(refined.point_at(t) - b.point_at(t)), 1e-12 * c.length()) << "p " << p << " t " << t;
       // The piece holding t, by de Casteljau.
       size_t j = static_cast<size_t>(std::upper_bound(breaks.begin(), breaks.end(), t) - breaks.begin());
       j = std::min(j == 0 ? 0 : j - 1, pieces.size() - 1);
