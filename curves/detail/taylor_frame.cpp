@@ -74,6 +74,7 @@ TaylorFrame integrate_taylor_frame(const FrameSeriesFunction& series, const Fram
     double frame_remainder = 0, position_remainder = 0;
     for (int shrink = 0;; ++shrink) {
       const double end = h == s1 - s ? s1 : s + h;
+      h = end - s;  // the step actually taken: s + h is rounded (exact difference, Sterbenz)
       const FrameMajorant most = majorant(s, end, h);
       // The majorant's coefficients through the same recursion bound G's on the whole step.
       Ghat = propagator_series([&](int i) -> M3 { return generator(most.kappa[i], most.tau[i]).cwiseAbs(); });
@@ -131,7 +132,7 @@ TaylorFrame integrate_taylor_frame(const FrameSeriesFunction& series, const Fram
     r.position_error += delta * h + (1 + delta) * (position_remainder + h * rounding_moved) + 2 * kEps * P_next.norm();
     F = F_next;
     P = P_next;
-    s = h == s1 - s ? s1 : s + h;
+    s = h == s1 - s ? s1 : s + h;  // = the step's end above
     ++r.steps;
     h *= 1.5;
     if (!F.allFinite() || !P.allFinite() || !std::isfinite(r.frame_error) || !std::isfinite(r.position_error)) {
