@@ -14,10 +14,26 @@
 // proven bound.
 #include <Eigen/Core>
 #include <array>
+#include <complex>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "lac/common/status.hpp"
+
+namespace lac {
+
+/// A planar tangent integral ∫ e^{iθ} with a proven bound (curves/planar/certified_position.hpp,
+/// curves/quadratic/certified_position.hpp).
+struct CertifiedTangentIntegral {
+  std::complex<double> value;  ///< ∫ e^{iθ} over the parameter interval
+  double error = 0;            ///< proven bound on |value − exact|
+  long steps = 0;              ///< Taylor steps taken
+  Status status = Status::ok;
+  std::string message;
+};
+
+}  // namespace lac
 
 namespace lac::detail {
 
@@ -61,5 +77,20 @@ struct TaylorFrame {
 TaylorFrame integrate_taylor_frame(const FrameSeriesFunction& series, const FrameMajorantFunction& majorant,
                                    const Eigen::Matrix3d& frame, const Eigen::Vector3d& position, double s0,
                                    double s1, double position_error, double frame_error, const char* who);
+
+/// A zone [a, b] crossed along the tangent at its start, |κ| ≤ kappa on it: the error is at most
+/// (length)²·kappa (the turning over the zone times its length). For points where the law's
+/// derivatives are unbounded (an inflection of an LA segment with −1/α not an integer, of the
+/// quadratic LA curve).
+struct TangentZone {
+  double a, b, kappa;
+};
+
+/// ∫_{t0}^{t1} e^{iθ(t)} dt (t0 ≤ t1, unit speed in t) with a proven bound: the parts outside the
+/// zone by the Taylor integrator (τ = 0), each from the tangent angle `angle(t, error)` (closed form,
+/// with a bound on its error), so that angle errors do not accumulate; the zone along the tangent.
+CertifiedTangentIntegral integrate_plane_tangent(const FrameSeriesFunction& series, const FrameMajorantFunction& majorant,
+                                                 const std::function<double(double t, double& error)>& angle,
+                                                 double t0, double t1, std::optional<TangentZone> zone, const char* who);
 
 }  // namespace lac::detail

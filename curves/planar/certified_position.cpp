@@ -79,13 +79,6 @@ detail::FrameSeries planar_series(const LaSegment& seg, double u, double h) {
   return out;
 }
 
-/// The frame [T N B] of the plane at angle φ.
-Eigen::Matrix3d plane_frame(double phi) {
-  Eigen::Matrix3d F;
-  F << std::cos(phi), -std::sin(phi), 0, std::sin(phi), std::cos(phi), 0, 0, 0, 1;
-  return F;
-}
-
 /// Bound on the error of the closed-form φ(u) (la_law.hpp's divided difference: a few ulps of its
 /// terms).
 double phi_error(const LaSegment& seg, double phi) {
@@ -99,16 +92,10 @@ CertifiedTangentIntegral integrate_tangent_certified(const LaSegment& seg, doubl
   seg.check_u(u0, "u0");
   seg.check_u(u1, "u1");
   if (!(u0 <= u1)) throw_input_error(who, "u1", u1, "[u0, ub]");
-  CertifiedTangentIntegral r;
-  if (u0 == u1) return r;
+  if (u0 == u1) return {};
   const LaLaw& law = seg.law();
-  // Pieces: Taylor steps away from an inflection, one tangent step across its zone.
-  struct Piece {
-    double a, b;
-    bool zone;
-  };
-  std::vector<Piece> pieces;
-  double zone_kappa = 0;
+  // Taylor steps away from an inflection, one tangent step across its zone.
+  std::optional<detail::TangentZone> zone;
   const double ta = law.t_of_q(seg.qa()), tb = law.t_of_q(seg.qb());
   if (law.alpha < 0 && ta != tb) {
     const double ui = seg.ua() + (seg.ub() - seg.ua()) * ta / (ta - tb);  // t = 0 (possibly outside)
@@ -116,39 +103,17 @@ CertifiedTangentIntegral integrate_tangent_certified(const LaSegment& seg, doubl
     double d = std::exp((std::log(kEps / 32) - p * std::log(dt_du)) / (p + 1));
     const auto k_at = [&](double u) { return std::abs(law.kappa_of_q(seg.normalized().q_at(u))); };
     for (int k = 0; k < 200 && d * std::max(k_at(ui - d), k_at(ui + d)) > kEps / 16; ++k) d *= 0.5;
-    zone_kappa = std::max(k_at(ui - d), k_at(ui + d));
-    const double za = std::max(u0, ui - d), zb = std::min(u1, ui + d);
-    if (za < zb) {
-      if (u0 < za) pieces.push_back({u0, za, false});
-      pieces.push_back({za, zb, true});
-      if (zb < u1) pieces.push_back({zb, u1, false});
-    }
+    zone = detail::TangentZone{ui - d, ui + d, std::max(k_at(ui - d), k_at(ui + d))};
   }
-  if (pieces.empty()) pieces.push_back({u0, u1, false});
-  for (const Piece& piece : pieces) {
-    const double phi = seg.phi_at(piece.a);
-    const double dphi = phi_error(seg, phi);
-    const double len = piece.b - piece.a;
-    if (piece.zone) {
-      // Along the tangent at the zone's start: |e^{iφ(u)} − e^{iφ(a)}| ≤ |φ(u) − φ(a)| ≤ len·max|k|.
-      r.value += len * std::polar(1.0, phi);
-      r.error += len * (len * zone_kappa + dphi + 2 * kEps);
-      continue;
-    }
-    const detail::FrameSeriesFunction series = [&](double u, double h) { return planar_series(seg, u, h); };
-    const detail::TaylorFrame t = detail::integrate_taylor_frame(series, detail::end_majorant(series), plane_frame(phi), Eigen::Vector3d::Zero(),
-        piece.a, piece.b, 0.0, std::sqrt(2.0) * dphi + 4 * kEps, who);
-    r.steps += t.steps;
-    if (t.status != Status::ok) {
-      r.status = t.status;
-      r.message = t.message;
-      r.error = HUGE_VAL;
-      return r;
-    }
-    r.value += std::complex<double>(t.position.x(), t.position.y());
-    r.error += t.position_error + 2 * kEps * std::abs(r.value);
-  }
-  return r;
+  const detail::FrameSeriesFunction series = [&](double u, double h) { return planar_series(seg, u, h); };
+  return detail::integrate_plane_tangent(
+      series, detail::end_majorant(series),
+      [&](double u, double& error) {
+        const double phi = seg.phi_at(u);
+        error = phi_error(seg, phi);
+        return phi;
+      },
+      u0, u1, zone, who);
 }
 
 CertifiedPoint position_certified(const LaSegment& seg, double u0, std::complex<double> p0, double p0_error,

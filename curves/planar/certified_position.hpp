@@ -14,17 +14,10 @@
 #include <string>
 
 #include "lac/common/status.hpp"
+#include "lac/curves/detail/taylor_frame.hpp"
 #include "lac/curves/planar/la_segment.hpp"
 
 namespace lac {
-
-struct CertifiedTangentIntegral {
-  std::complex<double> value;  ///< ∫_{u0}^{u1} e^{iφ(u)} du in the segment's frame
-  double error = 0;            ///< proven bound on |value − exact|
-  long steps = 0;              ///< Taylor steps taken
-  Status status = Status::ok;
-  std::string message;
-};
 
 /// ∫_{u0}^{u1} e^{iφ(u)} du for ua ≤ u0 ≤ u1 ≤ ub (InputError otherwise). Status max_iterations
 /// (no bound) when the integrator's step or step-count cap is reached.

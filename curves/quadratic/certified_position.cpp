@@ -76,12 +76,6 @@ struct Law {
   }
 };
 
-Eigen::Matrix3d plane_frame(double theta) {
-  Eigen::Matrix3d F;
-  F << std::cos(theta), -std::sin(theta), 0, std::sin(theta), std::cos(theta), 0, 0, 0, 1;
-  return F;
-}
-
 }  // namespace
 
 CertifiedTangentIntegral integrate_quadratic_certified(const QuadraticLaCurve& curve, double s0, double s1) {
@@ -93,16 +87,10 @@ CertifiedTangentIntegral integrate_quadratic_certified(const QuadraticLaCurve& c
     r.value = -r.value;
     return r;
   }
-  CertifiedTangentIntegral r;
-  if (s0 == s1) return r;
+  if (s0 == s1) return {};
   const Law law{curve, detail::kappa_derivative_polynomials(curve.alpha(), curve.gamma(), kTerms),
                 std::log(curve.lambda())};
-  struct Piece {
-    double a, b;
-    bool zone;
-  };
-  std::vector<Piece> pieces;
-  double zone_kappa = 0;
+  std::optional<detail::TangentZone> zone;
   if (curve.options().through_inflection && curve.has_inflection()) {
     const double si = curve.s_at_zero_kappa();
     const Interval domain = curve.s_domain();
@@ -112,41 +100,18 @@ CertifiedTangentIntegral integrate_quadratic_certified(const QuadraticLaCurve& c
     const double allowed = 1e-14 * (1 + (s1 - s0));
     double d = 1e-3 * (1 + std::abs(si) + (s1 - s0));
     for (int k = 0; k < 200 && 4 * d * d * std::max(k_at(si - d), k_at(si + d)) > allowed; ++k) d *= 0.5;
-    zone_kappa = std::max(k_at(si - d), k_at(si + d));
-    const double za = std::max(s0, si - d), zb = std::min(s1, si + d);
-    if (za < zb) {
-      if (s0 < za) pieces.push_back({s0, za, false});
-      pieces.push_back({za, zb, true});
-      if (zb < s1) pieces.push_back({zb, s1, false});
-    }
+    zone = detail::TangentZone{si - d, si + d, std::max(k_at(si - d), k_at(si + d))};
   }
-  if (pieces.empty()) pieces.push_back({s0, s1, false});
-  const detail::FrameSeriesFunction series = [&](double s, double h) { return law.series(s, h); };
-  const detail::FrameMajorantFunction majorant = [&](double a, double b, double h) { return law.majorant(a, b, h); };
-  for (const Piece& piece : pieces) {
-    double theta_error = 0;
-    const double theta = curve.theta_at_s(piece.a, theta_error);
-    const double dtheta = theta_error + 8 * kEps * (1 + std::abs(theta)) +
-                          std::abs(curve.kappa_at_s(piece.a)) * 16 * kEps * (1 + std::abs(piece.a));
-    const double len = piece.b - piece.a;
-    if (piece.zone) {
-      r.value += len * std::polar(1.0, theta);
-      r.error += len * (len * zone_kappa + dtheta + 2 * kEps);
-      continue;
-    }
-    const detail::TaylorFrame t = detail::integrate_taylor_frame(series, majorant, plane_frame(theta), Eigen::Vector3d::Zero(),
-                                                                 piece.a, piece.b, 0.0, std::sqrt(2.0) * dtheta + 4 * kEps, who);
-    r.steps += t.steps;
-    if (t.status != Status::ok) {
-      r.status = t.status;
-      r.message = t.message;
-      r.error = HUGE_VAL;
-      return r;
-    }
-    r.value += std::complex<double>(t.position.x(), t.position.y());
-    r.error += t.position_error + 2 * kEps * std::abs(r.value);
-  }
-  return r;
+  return detail::integrate_plane_tangent(
+      [&](double s, double h) { return law.series(s, h); },
+      [&](double a, double b, double h) { return law.majorant(a, b, h); },
+      [&](double s, double& error) {
+        const double theta = curve.theta_at_s(s, error);
+        // θ's own rounding and that of s, moved along the curve by κ.
+        error += 8 * kEps * (1 + std::abs(theta)) + std::abs(curve.kappa_at_s(s)) * 16 * kEps * (1 + std::abs(s));
+        return theta;
+      },
+      s0, s1, zone, who);
 }
 
 }  // namespace lac
