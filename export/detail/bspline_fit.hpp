@@ -1,9 +1,11 @@
 #pragma once
 // Internal: a B-spline with fewer control points than the certified Hermite B-spline H, fitted to H
-// by least squares, with a proven distance to H (docs/export.md, "Fewer control points").
+// by least squares reweighted toward the minimax (Lawson), with a proven distance to H
+// (docs/export.md, "Fewer control points").
 //
-// The fit B has H's degree p, simple knots inside each smooth part (C^(p−1)), uniform in arc length,
-// and at the joints of the curve's parts H's knot multiplicity (the continuity the curve has there).
+// The fit B has H's degree p, simple knots inside each smooth part (C^(p−1)), uniform in the index
+// of H's spans, and at the joints of the curve's parts H's knot multiplicity (the continuity the
+// curve has there).
 // Its first and last points, tangents and (p ≥ 5) second derivatives are H's, so B keeps the curve's
 // end data. The distance |B(t) − H(t)| is bounded exactly: both are written as Bézier pieces (by
 // blossoming) on the union of their knots, and the difference of two Bézier pieces of
@@ -126,6 +128,9 @@ void reverse_bspline(std::vector<double>& U, std::vector<P>& pts) {
   std::reverse(pts.begin(), pts.end());
 }
 
+/// Rounds of Lawson's reweighting in fit_bspline (1: plain least squares).
+inline constexpr int kLawsonRounds = 8;
+
 template <class P>
 struct FittedBSpline {
   std::vector<double> knots;
@@ -204,44 +209,70 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
       for (int d = 0; d < D; ++d) sum += coordinate(x, d) * coordinate(y, d);
       return sum;
     };
-    std::vector<Eigen::Triplet<double>> triplets;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(columns);
+    struct Sample {
+      std::vector<std::pair<Eigen::Index, P>> entries;  // column, its vector at this sample
+      P target;                                          // H minus the fixed points' part
+    };
+    std::vector<Sample> samples;
     std::vector<double> N;
-    std::vector<std::pair<Eigen::Index, P>> entries;  // column, its vector at this sample
     const int m = 2 * p + 2;
     for (size_t k = p; k + p + 1 < U.size(); ++k) {
       if (!(U[k + 1] > U[k])) continue;
       for (int j = 0; j < m; ++j) {
         const double t = U[k] + (U[k + 1] - U[k]) * 0.5 * (1 - std::cos(M_PI * (j + 0.5) / m));
         basis_functions(p, U, k, t, N);
-        P target = de_boor(p, UH, PH, {}, t);
-        entries.clear();
+        Sample sample{{}, de_boor(p, UH, PH, {}, t)};
         for (int i = 0; i <= p; ++i) {
           const size_t gi = k - p + i;
           if (gi >= free_begin && gi < free_end) {
             for (int d = 0; d < D; ++d) {
               P unit = pts[0] - pts[0];
               set_coordinate(unit, d, N[i]);
-              entries.emplace_back(static_cast<Eigen::Index>(D * (gi - free_begin) + d), unit);
+              sample.entries.emplace_back(static_cast<Eigen::Index>(D * (gi - free_begin) + d), unit);
             }
             continue;
           }
-          target = target - N[i] * pts[gi];
-          if (free_lengths && gi == 1) entries.emplace_back(columns - 2, N[i] * t_start);
-          if (free_lengths && gi == n - 2) entries.emplace_back(columns - 1, N[i] * t_end);
+          sample.target = sample.target - N[i] * pts[gi];
+          if (free_lengths && gi == 1) sample.entries.emplace_back(columns - 2, N[i] * t_start);
+          if (free_lengths && gi == n - 2) sample.entries.emplace_back(columns - 1, N[i] * t_end);
         }
-        for (const auto& [c1, v1] : entries) {
-          for (const auto& [c2, v2] : entries) triplets.emplace_back(c1, c2, dot(v1, v2));
-          rhs(c1) += dot(v1, target);
-        }
+        samples.push_back(std::move(sample));
       }
     }
-    Eigen::SparseMatrix<double> A(columns, columns);
-    A.setFromTriplets(triplets.begin(), triplets.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-    if (solver.info() != Eigen::Success) return out;
-    const Eigen::VectorXd x = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !x.allFinite()) return out;
+    // Weighted least squares, reweighted toward the discrete minimax (Lawson: w ← w·|error|,
+    // normalized); the solution with the smallest largest sample error is kept.
+    std::vector<double> w(samples.size(), 1.0);
+    Eigen::VectorXd x, best_x;
+    double best_max = HUGE_VAL;
+    for (int round = 0; round < kLawsonRounds; ++round) {
+      std::vector<Eigen::Triplet<double>> triplets;
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(columns);
+      for (size_t q = 0; q < samples.size(); ++q)
+        for (const auto& [c1, v1] : samples[q].entries) {
+          for (const auto& [c2, v2] : samples[q].entries) triplets.emplace_back(c1, c2, w[q] * dot(v1, v2));
+          rhs(c1) += w[q] * dot(v1, samples[q].target);
+        }
+      Eigen::SparseMatrix<double> A(columns, columns);
+      A.setFromTriplets(triplets.begin(), triplets.end());
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+      if (solver.info() != Eigen::Success) break;
+      x = solver.solve(rhs);
+      if (solver.info() != Eigen::Success || !x.allFinite()) break;
+      double largest = 0, total = 0;
+      std::vector<double> e(samples.size());
+      for (size_t q = 0; q < samples.size(); ++q) {
+        P fitted = samples[q].target - samples[q].target;
+        for (const auto& [c, v] : samples[q].entries) fitted = fitted + x(c) * v;
+        e[q] = fit_point_norm(P(samples[q].target - fitted));
+        largest = std::max(largest, e[q]);
+        total += w[q] * e[q];
+      }
+      if (largest < best_max) best_max = largest, best_x = x;
+      if (!(total > 0)) break;
+      for (size_t q = 0; q < samples.size(); ++q) w[q] *= e[q] * static_cast<double>(samples.size()) / total;
+    }
+    if (!std::isfinite(best_max)) return out;
+    x = best_x;
     for (size_t i = 0; i < nf; ++i)
       for (int d = 0; d < D; ++d) set_coordinate(pts[free_begin + i], d, x(static_cast<Eigen::Index>(D * i + d)));
     if (free_lengths) {
