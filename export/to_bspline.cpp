@@ -349,7 +349,7 @@ ExportResult certified_bspline_once(const std::vector<const SpanSource*>& parts,
                         [&](const BSpline& b, ExportInfo& info) {
                           if (check) check(b, info);
                         },
-                        options.remove_knots, std::vector<double>(starts.begin() + 1, starts.end() - 1));
+                        options.remove_knots, std::vector<double>(starts.begin() + 1, starts.end() - 1), options.fit);
   return r;
 }
 

@@ -47,14 +47,17 @@ struct ExportOptions {
   /// 5: quintic Hermite spans (c, c', c'' at the ends), C2 in arc length inside each LA segment and
   /// at G2 joints, so the curvature is continuous (G2); 3: cubic Hermite spans, C1 (G1).
   int degree = 5;
-  /// Reduce the control points within the tolerance: the Hermite spans are built to 1/10 of the
-  /// tolerance, then the knots they do not need are removed with a certified bound
-  /// (export/detail/hermite_bound.hpp, remove_knots_within), or, where it needs fewer points, a
-  /// least-squares fit with simple knots and a proven distance replaces them
-  /// (export/detail/bspline_fit.hpp); either is smoother (C4 for the quintic, C2 for the cubic,
-  /// inside each LA segment). The joints between segments stay knots of their multiplicity; the
-  /// ends keep the curve's end data. false: the Hermite spans' knots.
+  /// Remove knots inside each LA segment within the tolerance (export/detail/hermite_bound.hpp,
+  /// remove_knots_within): the Hermite spans are then built to 1/10 of the tolerance and the knots
+  /// they do not need are removed with a certified bound, leaving a smoother B-spline (C4 for the
+  /// quintic, C2 for the cubic, at the remaining interior knots) with fewer control points. The
+  /// joints between segments stay knots of their multiplicity. false: the Hermite spans' knots.
   bool remove_knots = true;
+  /// With remove_knots: also try a least-squares fit with simple knots and a proven distance
+  /// (export/detail/bspline_fit.hpp), taken where it needs fewer points. Fewest control points, but
+  /// its curvature follows the LA curve's less closely (its LCG is less straight:
+  /// results/export_lcg.md), so it is not the default. Joints and end data as above.
+  bool fit = false;
 };
 
 struct ExportInfo {

@@ -331,7 +331,8 @@ double remove_knots_within(int p, std::vector<double>& U, std::vector<P>& pts, c
 }
 
 /// The end of every to_bspline: r.curve (degree p) assembled from the pieces; with `reduce`, its
-/// knots removed within `tol` (remove_knots_within; the knots at `fixed`, the joints, kept); ExportInfo's span
+/// knots removed within `tol` (remove_knots_within; the knots at `fixed`, the joints, kept), and with
+/// `fit` also the least-squares fit tried (export/detail/bspline_fit.hpp); ExportInfo's span
 /// count (non-empty knot spans), continuity and bounds, check(r.curve, r.info), the summary, and
 /// the status: ok when the deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds
 /// the tolerance <tol>").
@@ -339,7 +340,8 @@ template <class R, class P, class Check>
 void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& pieces, const std::vector<int>& junction,
                            const std::vector<double>& knots, bool g2, const HermiteBounds& bounds, double tol,
                            double length, const char* what, std::chrono::steady_clock::time_point t_start,
-                           const Check& check, bool reduce = false, const std::vector<double>& fixed = {}) {
+                           const Check& check, bool reduce = false, const std::vector<double>& fixed = {},
+                           bool fit = false) {
   r.curve.degree = p;
   assemble_hermite_bspline(pieces, junction, knots, p, r.curve.knots, r.curve.control_points);
   r.info.continuity = g2 ? "G2" : "G1";
@@ -348,13 +350,16 @@ void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& piece
   double deviation = bounds.deviation;
   check(r.curve, r.info);
   if (reduce && deviation <= tol) {
-    const std::vector<double> UH = r.curve.knots;
-    const std::vector<P> PH = r.curve.control_points;
     deviation = remove_knots_within(p, r.curve.knots, r.curve.control_points, knots, bounds.span_deviation, fixed, tol);
     check(r.curve, r.info);
+  }
+  if (reduce && fit && deviation <= tol) {
     // A least-squares fit with fewer points within the tolerance (export/detail/bspline_fit.hpp):
     // the fewest spans whose proven bound holds, found by doubling and bisection; taken when it
     // keeps the curvature monotone wherever the knot removal's result does.
+    std::vector<double> UH;
+    std::vector<P> PH;
+    assemble_hermite_bspline(pieces, junction, knots, p, UH, PH);
     const size_t removed_points = r.curve.control_points.size();
     auto points_of = [&](long n) { return fit_bspline(p, UH, PH, knots, bounds.span_deviation, fixed, n); };
     FittedBSpline<P> best;

@@ -45,6 +45,11 @@ def test_bspline_within_its_certified_bound(curve, degree):
     h = lac.to_bspline(curve, tolerance=1e-6, degree=degree, remove_knots=False)
     assert h["usable"] and len(h["control_points"]) > len(cp)
     assert len(h["control_points"]) == (3 if degree == 5 else 2) * h["spans"] + (3 if degree == 5 else 2)
+    # fit=True: at most as many control points, within its own certified bound.
+    f = lac.to_bspline(curve, tolerance=1e-6, degree=degree, fit=True)
+    assert f["usable"] and len(f["control_points"]) <= len(cp) and f["max_deviation"] <= 1e-6
+    got = np.array([de_boor(f["knots"], f["control_points"], degree, t) for t in s])
+    assert np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y).max() <= f["max_deviation"]
 
 
 def test_tolerance_beyond_reach_is_inaccurate(curve):

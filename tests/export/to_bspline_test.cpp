@@ -96,17 +96,18 @@ void check_structure(int degree) {
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveCubic) { check_structure(3); }
 TEST(ToBspline, StructureOfTheG2AcceptanceCurveQuintic) { check_structure(5); }
 
-// Reduction (the default: knot removal, or a least-squares fit with a proven bound where it needs
-// fewer points): fewer control points than the Hermite spans at the same tolerance, the joints kept
+// Reduction (the default knot removal, and with `fit` a least-squares fit with a proven bound where
+// it needs fewer points): fewer control points than the Hermite spans at the same tolerance, the joints kept
 // with their multiplicity, the knots inside the segments simple;
 // the bound certified (measured ≤ bound ≤ tolerance) and the quintic's curvature still monotone
 // and continuous.
 TEST(ToBspline, ReductionKeepsTheJointsAndTheBound) {
   const PlanarCurve c = acceptance_curve();
+  for (bool fit : {false, true})
   for (int degree : {3, 5})
     for (double tol : {1e-3, 1e-6, 1e-9}) {
       const ExportResult h = to_bspline(c, {.tolerance = tol, .degree = degree, .remove_knots = false});
-      const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = degree});
+      const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = degree, .fit = fit});
       ASSERT_TRUE(h.usable() && r.usable()) << r.summary.message;
       r.curve.validate();
       EXPECT_LT(r.curve.control_points.size(), h.curve.control_points.size()) << "degree " << degree << " tol " << tol;
@@ -134,7 +135,7 @@ TEST(ToBspline, ReductionKeepsTheJointsAndTheBound) {
         EXPECT_TRUE(r.info.curvature_monotone || !h.info.curvature_monotone);
         EXPECT_LE(r.info.max_curvature_jump, 1e-9);
       }
-      std::printf("degree %d tol %g: %zu control points (Hermite spans %zu), bound %.3g, monotone %d\n", degree, tol,
+      std::printf("fit %d degree %d tol %g: %zu control points (Hermite spans %zu), bound %.3g, monotone %d\n", fit, degree, tol,
                   r.curve.control_points.size(), h.curve.control_points.size(), r.info.max_deviation,
                   r.info.curvature_monotone);
     }
@@ -180,7 +181,7 @@ TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
       continue;  // a random law out of the segment's domain
     }
     const double tol = (i % 3 == 0 ? 1e-3 : i % 3 == 1 ? 1e-6 : 1e-9) * c.length();
-    const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = i % 2 == 0 ? 5 : 3});
+    const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = i % 2 == 0 ? 5 : 3, .fit = i % 4 >= 2});  // half with the fit
     if (!r.usable() && r.summary.status == Status::inaccurate && r.info.positions > 0.1 * tol) {
       // The curve's own positions are not known to the tolerance (e.g. α near 0 in the plain form,
       // a near-step curvature): the export says inaccurate, as it must.
