@@ -169,7 +169,7 @@ TEST(ToBspline, ToleranceBelowThePositionsAccuracyIsInaccurate) {
 /// Random chains: the measured deviation never exceeds the bound. LAC_EXPORT_LONG=1: 10^4 curves.
 TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
   const bool long_run = std::getenv("LAC_EXPORT_LONG") != nullptr;
-  const int n = long_run ? 10000 : 200;
+  const int n = long_run ? 10000 : 120;
   std::mt19937_64 rng(20261127);
   int tested = 0, position_limited = 0;
   double max_ratio = 0;
