@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "lac/common/error.hpp"
+#include "lac/export/detail/bspline_core.hpp"
 #include "lac/export/detail/write_text.hpp"
 
 namespace lac {
@@ -28,35 +29,10 @@ ExportFormat export_format_from_path(const std::string& path, const char* parame
 std::vector<std::vector<std::complex<double>>> bezier_pieces(const BSpline& b) {
   b.validate();
   if (b.rational()) throw_input_error("bezier_pieces", "weights", "a polynomial (non-rational) B-spline");
-  const int p = b.degree;
-  std::vector<double> U = b.knots;
-  std::vector<std::complex<double>> P = b.control_points;
-  // Raise every interior knot to multiplicity p.
-  for (size_t k = static_cast<size_t>(p) + 1; k + p + 1 < U.size();) {
-    const double t = U[k];
-    size_t last = k;
-    while (last + 1 < U.size() && U[last + 1] == t) ++last;
-    const int r = static_cast<int>(last - k + 1);
-    if (last + p + 1 >= U.size()) break;  // the end knots
-    for (int times = r; times < p; ++times) {
-      const int rr = times;
-      const size_t kk = k + rr - 1;  // index of the last copy of t
-      std::vector<std::complex<double>> Q;
-      Q.reserve(P.size() + 1);
-      for (size_t i = 0; i + p <= kk; ++i) Q.push_back(P[i]);
-      for (size_t i = kk - p + 1; i <= kk - rr; ++i) {
-        const double a = (t - U[i]) / (U[i + p] - U[i]);
-        Q.push_back((1 - a) * P[i - 1] + a * P[i]);
-      }
-      for (size_t i = kk - rr; i < P.size(); ++i) Q.push_back(P[i]);
-      P = std::move(Q);
-      U.insert(U.begin() + static_cast<long>(kk) + 1, t);
-    }
-    k += static_cast<size_t>(std::max(r, p));
-  }
-  std::vector<std::vector<std::complex<double>>> pieces;
-  for (size_t i = 0; i + p < P.size(); i += p) pieces.emplace_back(P.begin() + i, P.begin() + i + p + 1);
-  return pieces;
+  std::vector<double> breaks;
+  std::vector<int> multiplicities;
+  detail::distinct_knots(std::vector<double>(b.knots.begin() + b.degree, b.knots.end() - b.degree), breaks, multiplicities);
+  return detail::bezier_pieces_on(b.degree, b.knots, b.control_points, breaks);
 }
 
 void write_dxf(std::ostream& out, const BSpline& b) {

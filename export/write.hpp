@@ -30,8 +30,8 @@ constexpr const char* to_string(ExportFormat f) {
   return "unknown";
 }
 
-/// The Bézier pieces of a polynomial B-spline (each degree + 1 points), by knot insertion
-/// (Boehm) up to multiplicity `degree` at every interior knot. InputError for a rational one.
+/// The Bézier pieces of a polynomial B-spline (each degree + 1 points), one per non-empty knot
+/// span (blossoms: detail::bezier_pieces_on). InputError for a rational one.
 std::vector<std::vector<std::complex<double>>> bezier_pieces(const BSpline& b);
 
 /// What write_svg draws besides the curve.

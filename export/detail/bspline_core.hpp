@@ -2,9 +2,11 @@
 // Internal: the one implementation of the B-spline operations that do not depend on the control
 // points' dimension, used by BSpline (export/bspline.hpp, planar) and BSpline3
 // (export/bspline3.hpp, space): the check of degree, knots and weights, the distinct knots with
-// their multiplicities, and de Boor's algorithm.
+// their multiplicities, de Boor's algorithm, the blossom and the Bézier pieces, and the norm of a
+// point of either type.
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <vector>
 
 #include "lac/common/error.hpp"
@@ -71,6 +73,51 @@ P de_boor(int p, const std::vector<double>& knots, const std::vector<P>& points,
       w[j] = (1.0 - a) * w[j - 1] + a * w[j];
     }
   return d[p] / w[p];
+}
+
+inline double point_norm(const std::complex<double>& a) { return std::abs(a); }
+template <class V>
+double point_norm(const V& a) {
+  return a.norm();
+}
+template <class P>
+double point_distance(const P& a, const P& b) {
+  return point_norm(P(a - b));
+}
+
+/// The blossom of the B-spline's piece on knot span k (U[k] < U[k+1]) at t[0], …, t[p − 1]: de Boor's
+/// algorithm with level r taking its own argument t[r − 1] (The NURBS Book §5.3; Ramshaw).
+template <class P>
+P blossom(int p, const std::vector<double>& U, const std::vector<P>& pts, size_t k, const double* t) {
+  std::vector<P> d(pts.begin() + static_cast<std::ptrdiff_t>(k - p), pts.begin() + static_cast<std::ptrdiff_t>(k + 1));
+  for (int r = 1; r <= p; ++r)
+    for (int i = p; i >= r; --i) {
+      const size_t lo = k - p + i;
+      const double a = (t[r - 1] - U[lo]) / (U[k + 1 + i - r] - U[lo]);
+      d[i] = (1 - a) * d[i - 1] + a * d[i];
+    }
+  return d[p];
+}
+
+/// The Bézier pieces (p + 1 points each) of the B-spline on the intervals between consecutive
+/// `breaks` (sorted, distinct, from t_min to t_max, holding every distinct knot in between): point i
+/// of the piece on [x0, x1] is the blossom at (x0 × (p − i), x1 × i).
+template <class P>
+std::vector<std::vector<P>> bezier_pieces_on(int p, const std::vector<double>& U, const std::vector<P>& pts,
+                                             const std::vector<double>& breaks) {
+  std::vector<std::vector<P>> out(breaks.size() - 1);
+  std::vector<double> t(p);
+  for (size_t j = 0; j < out.size(); ++j) {
+    const double x0 = breaks[j], x1 = breaks[j + 1], mid = 0.5 * (x0 + x1);
+    size_t k = static_cast<size_t>(std::upper_bound(U.begin(), U.end(), mid) - U.begin()) - 1;
+    k = std::min(k, U.size() - p - 2);
+    out[j].resize(p + 1);
+    for (int i = 0; i <= p; ++i) {
+      for (int r = 0; r < p; ++r) t[r] = r < p - i ? x0 : x1;
+      out[j][i] = blossom(p, U, pts, k, t.data());
+    }
+  }
+  return out;
 }
 
 }  // namespace lac::detail

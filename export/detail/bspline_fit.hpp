@@ -7,8 +7,8 @@
 // of H's spans, and at the joints of the curve's parts H's knot multiplicity (the continuity the
 // curve has there).
 // Its first and last points, tangents and (p ≥ 5) second derivatives are H's, so B keeps the curve's
-// end data. The distance |B(t) − H(t)| is bounded exactly: both are written as Bézier pieces (by
-// blossoming) on the union of their knots, and the difference of two Bézier pieces of
+// end data. The distance |B(t) − H(t)| is bounded exactly: both are written as Bézier pieces
+// (bezier_pieces_on, export/detail/bspline_core.hpp) on the union of their knots, and the difference of two Bézier pieces of
 // one degree on one interval is at most the largest distance of their control points (the
 // Bernstein basis is a nonnegative partition of unity). With H's own certified bound on each of its
 // spans the triangle inequality gives B's. Written by hand: the fitting and refinement are the
@@ -40,47 +40,6 @@ template <class V>
 void set_coordinate(V& p, int d, double v) {
   p(d) = v;
 }
-inline double fit_point_norm(const std::complex<double>& a) { return std::abs(a); }
-template <class V>
-double fit_point_norm(const V& a) {
-  return a.norm();
-}
-
-/// The blossom of the B-spline's piece on knot span k (U[k] < U[k+1]) at t[0], …, t[p − 1]: de Boor's
-/// algorithm with level r taking its own argument t[r − 1] (The NURBS Book §5.3; Ramshaw).
-template <class P>
-P blossom(int p, const std::vector<double>& U, const std::vector<P>& pts, size_t k, const double* t) {
-  std::vector<P> d(pts.begin() + static_cast<std::ptrdiff_t>(k - p), pts.begin() + static_cast<std::ptrdiff_t>(k + 1));
-  for (int r = 1; r <= p; ++r)
-    for (int i = p; i >= r; --i) {
-      const size_t lo = k - p + i;
-      const double a = (t[r - 1] - U[lo]) / (U[k + 1 + i - r] - U[lo]);
-      d[i] = (1 - a) * d[i - 1] + a * d[i];
-    }
-  return d[p];
-}
-
-/// The Bézier pieces (p + 1 points each) of the B-spline on the intervals between consecutive
-/// `breaks` (sorted, distinct, from t_min to t_max, holding every distinct knot in between): point i
-/// of the piece on [x0, x1] is the blossom at (x0 × (p − i), x1 × i).
-template <class P>
-std::vector<std::vector<P>> bezier_pieces_on(int p, const std::vector<double>& U, const std::vector<P>& pts,
-                                             const std::vector<double>& breaks) {
-  std::vector<std::vector<P>> out(breaks.size() - 1);
-  std::vector<double> t(p);
-  for (size_t j = 0; j < out.size(); ++j) {
-    const double x0 = breaks[j], x1 = breaks[j + 1], mid = 0.5 * (x0 + x1);
-    size_t k = static_cast<size_t>(std::upper_bound(U.begin(), U.end(), mid) - U.begin()) - 1;
-    k = std::min(k, U.size() - p - 2);
-    out[j].resize(p + 1);
-    for (int i = 0; i <= p; ++i) {
-      for (int r = 0; r < p; ++r) t[r] = r < p - i ? x0 : x1;
-      out[j][i] = blossom(p, U, pts, k, t.data());
-    }
-  }
-  return out;
-}
-
 /// The nonzero basis functions N_{k−p} … N_k at t in span k (The NURBS Book A2.2).
 inline void basis_functions(int p, const std::vector<double>& U, size_t k, double t, std::vector<double>& N) {
   N.assign(p + 1, 0.0);
@@ -147,7 +106,7 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
                              const std::vector<double>& fixed, long spans) {
   FittedBSpline<P> out;
   const double a = UH[p], b = UH[UH.size() - 1 - p], length = b - a;
-  // Knots: uniform in each part, the joints with H's multiplicity.
+  // Knots: inside each part uniform in the index of H's spans, the joints with H's multiplicity.
   std::vector<double>& U = out.knots;
   U.assign(p + 1, a);
   double from = a;
@@ -200,8 +159,8 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
   const size_t free_begin = fixed_count, free_end = n - fixed_count, nf = free_end - free_begin;
   const Eigen::Index columns = static_cast<Eigen::Index>(D * nf) + (free_lengths ? 2 : 0);
   P t_start = pts[1] - pts[0], t_end = pts[n - 2] - pts[n - 1];
-  t_start = (1.0 / fit_point_norm(t_start)) * t_start;
-  t_end = (1.0 / fit_point_norm(t_end)) * t_end;
+  t_start = (1.0 / point_norm(t_start)) * t_start;
+  t_end = (1.0 / point_norm(t_end)) * t_end;
   if (free_lengths) pts[1] = pts[0], pts[n - 2] = pts[n - 1];  // the λ parts come from the solve
   if (columns > 0) {
     auto dot = [](const P& x, const P& y) {
@@ -263,7 +222,7 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
       for (size_t q = 0; q < samples.size(); ++q) {
         P fitted = samples[q].target - samples[q].target;
         for (const auto& [c, v] : samples[q].entries) fitted = fitted + x(c) * v;
-        e[q] = fit_point_norm(P(samples[q].target - fitted));
+        e[q] = point_norm(P(samples[q].target - fitted));
         largest = std::max(largest, e[q]);
         total += w[q] * e[q];
       }
@@ -304,8 +263,8 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
   for (size_t j = 0; j < pb.size(); ++j) {
     double e = 0, size = 0;
     for (int i = 0; i <= p; ++i) {
-      e = std::max(e, fit_point_norm(P(pb[j][i] - ph[j][i])));
-      size = std::max(size, fit_point_norm(pb[j][i]) + fit_point_norm(ph[j][i]));
+      e = std::max(e, point_norm(P(pb[j][i] - ph[j][i])));
+      size = std::max(size, point_norm(pb[j][i]) + point_norm(ph[j][i]));
     }
     // Rounding of the blossoms (p levels of convex combinations).
     e += (64 + 8 * p * p) * DBL_EPSILON * size;

@@ -234,16 +234,6 @@ struct HermiteBounds {
   }
 };
 
-inline double point_norm(const std::complex<double>& a) { return std::abs(a); }
-template <class V>
-double point_norm(const V& a) {
-  return a.norm();
-}
-template <class P>
-double point_distance(const P& a, const P& b) {
-  return point_norm(P(a - b));
-}
-
 /// Knot removal within a certified bound (Tiller's algorithm, The NURBS Book A5.8, one occurrence
 /// at a time). Removing one occurrence of u (multiplicity s) solves for the new control points
 /// from both sides; the bound of that step is exact, not Tiller's estimate: u is inserted again
