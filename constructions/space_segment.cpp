@@ -305,9 +305,9 @@ struct RunOutcome {
 };
 
 // One solver run from x0 with Frenet settings `frenet` (nullptr: the options'), to `tolerance`, with
-// finite-difference steps `fd_step`.
-RunOutcome run_once(const Problem& pb, const Vec2& x0, long& ode_evals, const OdeOptions* frenet, double tolerance,
-                    double fd_step) {
+// finite-difference steps `fd_step` (Newton, Ceres) or an initial simplex of edge `simplex_step`.
+RunOutcome run_once(const Problem& pb, NonlinearMethod method, const Vec2& x0, long& ode_evals, const OdeOptions* frenet,
+                    double tolerance, double fd_step, double simplex_step) {
   const SpaceSegmentOptions& o = *pb.opt;
   auto trial = [&](const Vec2& x) -> std::optional<Trial> {
     if (!in_box(x) || ode_evals >= o.max_ode_evaluations) return std::nullopt;  // budget spent: undefined
@@ -318,11 +318,14 @@ RunOutcome run_once(const Problem& pb, const Vec2& x0, long& ode_evals, const Od
   };
   NonlinearOptions so;
   so.residual_tolerance = tolerance;  // simplex: on the end-tangent angle
-  so.simplex.initial_step = 0.3;
+  so.simplex.initial_step = simplex_step;
   so.simplex.x_tolerance = 1e-13;
   so.simplex.max_evaluations = o.max_evaluations;
   so.simplex.max_iterations = static_cast<int>(std::min<long>(o.max_evaluations, std::numeric_limits<int>::max()));
   so.simplex.restarts = 3;
+  // Data without a curve: runs collapse onto a positive minimum of the end-tangent angle (often
+  // ~0.7 rad); stopping there saves ~5/6 of such a run (docs/space_curves.md).
+  so.simplex.minimum_spread = 1e-6;
   so.simplex.merit = [&](ConstVectorMap x) -> std::optional<double> {
     const auto t = trial(Vec2(x));
     if (!t) return std::nullopt;
@@ -342,32 +345,34 @@ RunOutcome run_once(const Problem& pb, const Vec2& x0, long& ode_evals, const Od
                                      r = *s;
                                      return true;
                                    }};
-  const NonlinearResult res = solve_nonlinear(o.solver, residual, x0, so);
+  const NonlinearResult res = solve_nonlinear(method, residual, x0, so);
   return {res.x, res.status, res.merit, res.iterations, res.evaluations, res.message};
 }
 
 // Rough integration (rtol 1e-8) is a few times cheaper than the default 1e-10 and moves the end
 // tangent by ~1e-8 rad: a run first converges on it to kRoughTolerance (finite differences of
-// 1e-4, far above its noise), then is polished at the options' settings from there. A run whose
-// rough phase stops farther than kRoughNear from the end tangent (most runs on data without a curve)
-// fails at the rough cost (Newton and Ceres); one that stops nearer is polished anyway.
+// 1e-4, far above its noise), then is polished at the options' settings from there (the simplex
+// from a fresh simplex of edge kPolishStep). A run whose rough phase stops farther than
+// kRoughNear from the end tangent (most runs on data without a curve) fails at the rough cost.
 constexpr double kRoughRtol = 1e-8, kRoughTolerance = 1e-6, kRoughFdStep = 1e-4, kRoughNear = 1e-2;
+constexpr double kSimplexStep = 0.3, kPolishStep = 1e-4;
+constexpr double kFallbackNear = 0.05;
 
-RunOutcome run_solver(const Problem& pb, const Vec2& x0, long& ode_evals) {
+RunOutcome run_solver(const Problem& pb, NonlinearMethod method, const Vec2& x0, long& ode_evals) {
   const SpaceSegmentOptions& o = *pb.opt;
   OdeOptions rough = o.integrator;
   rough.rtol = std::max(rough.rtol, kRoughRtol);
   rough.atol = std::max(rough.atol, 0.1 * kRoughRtol);
-  // Not for the simplex: a second simplex would start afresh from its initial size.
-  const bool two_phase = o.solver != NonlinearMethod::simplex && o.integrator.method != OdeMethod::rk4 &&
-                         rough.rtol > o.integrator.rtol && o.tangent_tolerance < kRoughTolerance;
-  if (!two_phase) return run_once(pb, x0, ode_evals, nullptr, o.tangent_tolerance, 1e-7);
-  RunOutcome first = run_once(pb, x0, ode_evals, &rough, kRoughTolerance, kRoughFdStep);
+  const bool simplex = method == NonlinearMethod::simplex;
+  const bool two_phase = o.integrator.method != OdeMethod::rk4 && rough.rtol > o.integrator.rtol &&
+                         o.tangent_tolerance < kRoughTolerance;
+  if (!two_phase) return run_once(pb, method, x0, ode_evals, nullptr, o.tangent_tolerance, 1e-7, kSimplexStep);
+  RunOutcome first = run_once(pb, method, x0, ode_evals, &rough, kRoughTolerance, kRoughFdStep, kSimplexStep);
   if (first.status != Status::ok && !(first.merit <= kRoughNear)) {
     first.message = "at rtol " + format_number(kRoughRtol) + ": " + first.message;
     return first;
   }
-  RunOutcome out = run_once(pb, first.x, ode_evals, nullptr, o.tangent_tolerance, 1e-7);
+  RunOutcome out = run_once(pb, method, first.x, ode_evals, nullptr, o.tangent_tolerance, 1e-7, simplex ? kPolishStep : kSimplexStep);
   out.iterations += first.iterations;
   out.evaluations += first.evaluations;
   return out;
@@ -426,10 +431,11 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
     return r;
   };
   std::optional<RunOutcome> closest;  // the failed run that stopped nearest to a solution
-  auto attempt = [&](const Candidate& c) -> std::optional<SpaceResult> {
+  int closest_hand = 0;
+  auto attempt = [&](const Candidate& c, NonlinearMethod method) -> std::optional<SpaceResult> {
     const Problem& pb = problems[c.hand];
     ++runs;
-    RunOutcome out = run_solver(pb, c.x, ode);
+    RunOutcome out = run_solver(pb, method, c.x, ode);
     iterations += out.iterations;
     evals += out.evaluations;
     if (out.status == Status::ok) {
@@ -441,7 +447,10 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
       out.status = Status::not_converged;
       out.message = "the solver's solution did not reproduce: " + r.summary.message;
     }
-    if (!closest || out.merit < closest->merit) closest = std::move(out);
+    if (!closest || out.merit < closest->merit) {
+      closest = std::move(out);
+      closest_hand = c.hand;
+    }
     return std::nullopt;
   };
   auto by_error = [](const Candidate& a, const Candidate& b) { return a.error < b.error; };
@@ -450,7 +459,7 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
   screen(x_start, first, nullptr);
   std::sort(first.begin(), first.end(), by_error);
   if (!first.empty())
-    if (auto r = attempt(first.front())) return *r;
+    if (auto r = attempt(first.front(), opt.solver)) return *r;
   // Phase 2: screen a log-space grid around the start (both hands) and run the solver from the
   // best remaining points, up to max_starts runs in all.
   std::vector<Candidate> grid;
@@ -461,8 +470,14 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
   std::sort(grid.begin(), grid.end(), by_error);
   for (const Candidate& c : grid) {
     if (runs >= opt.max_starts || ode >= opt.max_ode_evaluations) break;
-    if (auto r = attempt(c)) return *r;
+    if (auto r = attempt(c, opt.solver)) return *r;
   }
+  // Phase 3: Newton and Ceres stop where their direction fails (near folds of the end-tangent
+  // map); when the closest run stopped within kFallbackNear rad, one simplex run from there.
+  const bool fallback = opt.solver != NonlinearMethod::simplex && closest && closest->merit <= kFallbackNear &&
+                        ode < opt.max_ode_evaluations;
+  if (fallback)
+    if (auto r = attempt({closest->merit, closest_hand, closest->x}, NonlinearMethod::simplex)) return *r;
   // No curve. The search (the start, then the best points of the grid) is not complete, so a
   // curve may still exist: not_converged, or the closest run's own status (e.g. max_iterations).
   SpaceResult r;
@@ -472,7 +487,8 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
                                std::to_string(opt.max_starts) + ") from the start (Lambda0, nu0) = (" +
                                format_number(lambda_start) + ", " + format_number(opt.nu_start) +
                                ") and the best points of the 7 x 6 grid of (log Lambda0, log nu0) around it" +
-                               (hands == 2 ? ", both hands" : "");
+                               (hands == 2 ? ", both hands" : "") +
+                               (fallback ? ", the last a simplex run from the closest stop" : "");
   if (ode >= opt.max_ode_evaluations) {
     r.summary.status = Status::max_iterations;
     r.summary.message = solver + ": Frenet evaluation budget max_ode_evaluations = " +

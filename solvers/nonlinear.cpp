@@ -26,7 +26,7 @@ constexpr std::array<NonlinearMethodInfo, 3> kNonlinearMethods = {{
     {NonlinearMethod::simplex, "simplex", kSimplexAliases,
      "modified downhill simplex (000's): minimizes |r| or a caller's merit; undefined points rank worst",
      "residual_tolerance (target of the merit), norm, simplex.{initial_step, x_tolerance, f_tolerance, "
-     "max_iterations, max_evaluations, restarts, merit}"},
+     "max_iterations, max_evaluations, restarts, minimum_spread, merit}"},
 }};
 
 }  // namespace
@@ -74,6 +74,7 @@ void SimplexOptions::validate() const {
   if (max_iterations < 1) throw_input_error(who, "max_iterations", max_iterations, "[1, inf)");
   if (max_evaluations < 1) throw_input_error(who, "max_evaluations", static_cast<double>(max_evaluations), "[1, inf)");
   if (restarts < 0) throw_input_error(who, "restarts", restarts, "[0, inf)");
+  if (!(minimum_spread >= 0 && minimum_spread < 1)) throw_input_error(who, "minimum_spread", minimum_spread, "[0, 1)");
 }
 
 void NonlinearOptions::validate() const {

@@ -108,6 +108,11 @@ struct SimplexOptions {
   int max_iterations = 2000;   ///< simplex moves
   long max_evaluations = 5000; ///< merit calls
   int restarts = 2;            ///< fresh simplices around the best vertex after a collapse
+  /// > 0: a simplex also counts as collapsed at a positive local minimum, once its size is
+  /// ≤ 1e-4 × initial_step and its merits' spread is ≤ this × the best merit (> the tolerance).
+  /// Near a root the merit changes at the simplex's own scale (spread ~ best), at a minimum above
+  /// zero quadratically (spread ~ size²): the test stops such runs long before x_tolerance.
+  double minimum_spread = 0;
   /// Minimized instead of ‖r‖ when set (nullopt or non-finite: undefined); the residual is then never
   /// evaluated (the result's residual is empty).
   std::function<std::optional<double>(ConstVectorMap x)> merit;

@@ -90,15 +90,19 @@ NonlinearResult simplex(const NonlinearResidual& residual, const Eigen::VectorXd
       double size = 0;
       for (size_t i = 1; i < vertices; ++i) size = std::max(size, (p[i] - p[0]).cwiseAbs().maxCoeff());
       const bool flat = std::isfinite(fv[w]) && fv[w] - fv[0] <= so.f_tolerance;
-      if (size <= so.x_tolerance && (flat || so.f_tolerance == 0)) {
+      const bool positive_minimum = so.minimum_spread > 0 && std::isfinite(fv[w]) &&
+                                    size <= 1e-4 * so.initial_step && fv[w] - fv[0] <= so.minimum_spread * fv[0];
+      if ((size <= so.x_tolerance && (flat || so.f_tolerance == 0)) || positive_minimum) {
         if (restarts_left-- > 0) {
           build(p[0], std::max(1e3 * so.x_tolerance, 1e-3 * so.initial_step));
           order();
           continue;
         }
         r.status = Status::not_converged;
-        r.message = "simplex: collapsed (vertices within x_tolerance) at merit " + format_number(fv[0]) +
-                    ", above the tolerance";
+        r.message = positive_minimum ? "simplex: stopped at a positive local minimum of the merit, " + format_number(fv[0]) +
+                                           " (spread within minimum_spread)"
+                                     : "simplex: collapsed (vertices within x_tolerance) at merit " + format_number(fv[0]) +
+                                           ", above the tolerance";
         break;
       }
       if (r.iterations >= so.max_iterations || r.evaluations >= so.max_evaluations) {

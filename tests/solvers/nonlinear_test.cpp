@@ -218,6 +218,23 @@ TEST(Nonlinear, StallsAreNotConverged) {
   EXPECT_LT(r.evaluations, o.simplex.max_evaluations);
 }
 
+TEST(Nonlinear, SimplexStopsEarlyAtAPositiveMinimumButNotNearARoot) {
+  NonlinearOptions o;
+  o.simplex.x_tolerance = 1e-13;
+  const NonlinearResult collapsed = solve(NonlinearMethod::simplex, kNoRoot, Vec2(0.5, 0.5), o);
+  o.simplex.minimum_spread = 1e-6;
+  const NonlinearResult early = solve(NonlinearMethod::simplex, kNoRoot, Vec2(0.5, 0.5), o);
+  EXPECT_EQ(early.status, Status::not_converged) << early.message;
+  EXPECT_NE(early.message.find("positive local minimum"), std::string::npos) << early.message;
+  EXPECT_NEAR(early.merit, 1.0, 1e-9);
+  EXPECT_LT(2 * early.evaluations, collapsed.evaluations) << early.evaluations << " vs " << collapsed.evaluations;
+  // With a root the merit's spread stays of the order of the merit: the test never fires.
+  const NonlinearResult root = solve(NonlinearMethod::simplex, kRosenbrock, Vec2(-0.4, 1.5), o);
+  EXPECT_EQ(root.status, Status::ok) << root.message;
+  o.simplex.minimum_spread = 1;
+  EXPECT_THROW(solve(NonlinearMethod::simplex, kNoRoot, Vec2(0.5, 0.5), o), InputError);
+}
+
 TEST(Nonlinear, CapsAreMaxIterations) {
   NonlinearOptions o;
   o.newton.max_iterations = 2;
