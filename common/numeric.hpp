@@ -14,6 +14,18 @@ inline double log1p_ratio(double x) { return x == 0 ? 1.0 : std::log1p(x) / x; }
 /// h(y) = expm1(y)/y, continuous (= 1) at 0.
 inline double expm1_ratio(double y) { return y == 0 ? 1.0 : std::expm1(y) / y; }
 
+/// x^e for x ≥ 0 (any x for integer e). Integer and half-integer exponents |e| ≤ 4 by products,
+/// one sqrt and one division (≤ 4 ulp where x^|e| is a normal number; the LA laws of α = ±1, ±2, ±1/2 have only these: K = |q|^(−1/α)
+/// and its derivatives and antiderivative), std::pow otherwise — several times faster there.
+inline double power(double x, double e) {
+  const double twice = 2.0 * e;
+  if (!(std::abs(twice) <= 8) || twice != std::trunc(twice)) return std::pow(x, e);
+  const int m = static_cast<int>(std::abs(twice));
+  double r = (m & 1) ? std::sqrt(x) : 1.0;
+  for (int i = 0; i < m / 2; ++i) r *= x;
+  return twice < 0 ? 1.0 / r : r;
+}
+
 /// An interval of a curve parameter; infinite ends are ±inf. Open unless an end is marked closed
 /// (e.g. the arc-length range [0, L] of a finite curve).
 struct Interval {

@@ -63,7 +63,7 @@ std::array<SegmentCoefficients, 3> coefficients(const LaLaw& law, const std::arr
     } else if (a == 1) {
       c[i].c2 = g.phi_a - std::log(std::abs(g.qa)) / c0;  // 004 Eq. (8)
     } else {
-      c[i].c2 = g.phi_a - a / ((a - 1.0) * c0) * std::pow(std::abs(g.qa), (a - 1.0) / a);  // 004 Eq. (5)
+      c[i].c2 = g.phi_a - a / ((a - 1.0) * c0) * power(std::abs(g.qa), (a - 1.0) / a);  // 004 Eq. (5)
     }
   }
   return c;

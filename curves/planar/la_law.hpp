@@ -29,6 +29,8 @@
 // near α = 0, and the exact value K(a) at a = b.
 #include <cmath>
 
+#include "lac/common/numeric.hpp"
+
 namespace lac {
 
 struct LaLaw {
@@ -56,9 +58,9 @@ struct LaLaw {
         const double l = std::log(std::abs(kappa));
         return l * expm1_ratio(-alpha * l);
       }
-      return (1.0 + std::pow(std::abs(kappa), -alpha)) / alpha;  // t = −|κ|^(−α) (κ = 0: t = 0)
+      return (1.0 + power(std::abs(kappa), -alpha)) / alpha;  // t = −|κ|^(−α) (κ = 0: t = 0)
     }
-    return std::copysign(std::pow(std::abs(kappa), -alpha), kappa);
+    return std::copysign(power(std::abs(kappa), -alpha), kappa);
   }
   double kappa_of_q(double q) const {
     if (alpha == 0) return sigma * std::exp(q);
@@ -66,11 +68,11 @@ struct LaLaw {
       const double z = -alpha * q;
       if (z > -1) return sigma * std::exp(q * log1p_ratio(z));
       if (z == -1) return alpha < 0 ? 0.0 : sigma * HUGE_VAL;
-      return -sigma * std::pow(-(1.0 + z), -1.0 / alpha);
+      return -sigma * power(-(1.0 + z), -1.0 / alpha);
     }
     if (alpha == -1) return q;
     if (q == 0) return alpha < 0 ? 0.0 : std::copysign(HUGE_VAL, q);
-    return std::copysign(std::pow(std::abs(q), -1.0 / alpha), q);
+    return std::copysign(power(std::abs(q), -1.0 / alpha), q);
   }
   /// Antiderivative of K in q (even in t for α ≠ 0).
   double F(double q) const {
@@ -79,11 +81,11 @@ struct LaLaw {
       const double z = -alpha * q;
       if (alpha == 1) return z > -1 ? sigma * q * log1p_ratio(z) : -sigma * std::log(std::abs(1.0 + z));
       if (z > -1) return sigma * std::exp((1.0 - alpha) * q * log1p_ratio(z)) / (1.0 - alpha);
-      return sigma * std::pow(std::abs(1.0 + z), 1.0 - 1.0 / alpha) / (1.0 - alpha);
+      return sigma * power(std::abs(1.0 + z), 1.0 - 1.0 / alpha) / (1.0 - alpha);
     }
     if (alpha == 1) return std::log(std::abs(q));
     if (alpha == -1) return 0.5 * q * q;
-    return alpha / (alpha - 1.0) * std::pow(std::abs(q), (alpha - 1.0) / alpha);
+    return alpha / (alpha - 1.0) * power(std::abs(q), (alpha - 1.0) / alpha);
   }
   /// The q on the side `sign` of the zero of t (the sign of t; ignored for α = 0) with F(q) = y:
   /// the inverse of F on that side. NaN where y is not a value of F.
@@ -96,17 +98,17 @@ struct LaLaw {
         const double l = std::log(v) / (1.0 - alpha);  // log|κ|
         return l * expm1_ratio(-alpha * l);
       }
-      return (1.0 + std::pow(v, alpha / (alpha - 1.0))) / alpha;
+      return (1.0 + power(v, alpha / (alpha - 1.0))) / alpha;
     }
     if (alpha == 1) return std::copysign(std::exp(y), sign);
-    return std::copysign(std::pow((alpha - 1.0) / alpha * y, alpha / (alpha - 1.0)), sign);
+    return std::copysign(power((alpha - 1.0) / alpha * y, alpha / (alpha - 1.0)), sign);
   }
   /// dK/dq and d²K/dq².
   double dK(double q) const {
     if (alpha == 0) return sigma * std::exp(q);
     if (offset) return kappa_of_q(q) / (1.0 - alpha * q);
     const double b = -1.0 / alpha;
-    return b * std::pow(std::abs(q), b - 1.0);
+    return b * power(std::abs(q), b - 1.0);
   }
   double d2K(double q) const {
     if (alpha == 0) return sigma * std::exp(q);
@@ -115,7 +117,7 @@ struct LaLaw {
       return kappa_of_q(q) * (1.0 + alpha) / (t * t);
     }
     const double b = -1.0 / alpha;
-    return b * (b - 1.0) * std::copysign(std::pow(std::abs(q), b - 2.0), q);
+    return b * (b - 1.0) * std::copysign(power(std::abs(q), b - 2.0), q);
   }
 
   /// F[a, b] = (F(b) − F(a)) / (b − a), the mean curvature between q = a and q = b.

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "lac/common/numeric.hpp"
 #include "lac/curves/planar/la_law.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
 
@@ -28,7 +29,7 @@ Dual operator/(Dual a, Dual b) { return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b
 Dual operator*(double k, Dual a) { return {k * a.v, k * a.d}; }
 Dual operator+(double k, Dual a) { return {k + a.v, a.d}; }
 Dual dual_pow(Dual a, double e) {  // a > 0
-  const double p = std::pow(a.v, e);
+  const double p = power(a.v, e);
   return {p, e * p / a.v * a.d};
 }
 Dual dual_log(Dual a) { return {std::log(a.v), a.d / a.v}; }  // a > 0
@@ -69,21 +70,21 @@ struct Power {
   bool log_F;
   explicit Power(double a) : alpha(a), b(-1.0 / a), p(1.0 - 1.0 / a), log_F(a == 1) {}
 
-  double K(double q) const { return std::copysign(std::pow(std::abs(q), b), q); }
+  double K(double q) const { return std::copysign(power(std::abs(q), b), q); }
   double F(double q) const {
     const double aq = std::abs(q);
-    return log_F ? std::log(aq) : aq * std::pow(aq, b) / p;
+    return log_F ? std::log(aq) : aq * power(aq, b) / p;
   }
   Dual F(Dual q) const {
     const double aq = std::abs(q.v);
     if (log_F) return {std::log(aq), q.d / q.v};
-    const double w = std::pow(aq, b);
+    const double w = power(aq, b);
     return {aq * w / p, std::copysign(w, q.v) * q.d};
   }
   // K^(n)(m) for n = 0 … 5: b(b−1)…(b−n+1) sgn(m)^(n+1) |m|^(b−n).
   void derivatives(double m, double out[6]) const {
     const double am = std::abs(m), sg = m < 0 ? -1.0 : 1.0, inv = 1.0 / am;
-    double c = 1, pw = std::pow(am, b);
+    double c = 1, pw = power(am, b);
     for (int n = 0; n < 6; ++n) {
       out[n] = c * pw * (n % 2 == 0 ? sg : 1.0);
       c *= b - n;
@@ -106,7 +107,7 @@ struct Power {
       const Dual r = (z - x) / x, R = std::abs(r.v) > 0.5 ? dual_log(z / x) / r : log1p_ratio(r);  // log(z/x) direct: r ≈ −1 loses digits
       const Dual pL = p * (r * R);
       if (std::abs(pL.v) < 1) {  // beyond, F(z)/F(x) differs from 1 by a factor e: no cancellation
-        const double ax = std::abs(x.v), w = std::pow(ax, b);
+        const double ax = std::abs(x.v), w = power(ax, b);
         const Dual Kx{std::copysign(w, x.v), b * w / ax * x.d};
         return Kx * expm1_ratio(pL) * R;
       }
@@ -652,7 +653,7 @@ std::optional<LaSegmentIntegral> segment_integral(const LaLaw& law, const detail
       // φ's total variation: from the zero of q to each end the turning is |F(q)|/|dq/du| with
       // |F(q)| = |q|^p/|p| (la_law.hpp; F(0) = 0 for α < 0) and dq/du = qb − qa on [0, 1]; |Δ| when
       // q keeps its sign.
-      const double variation = ta * tb < 0 ? (std::pow(std::abs(qa), p) + std::pow(std::abs(qb), p)) /
+      const double variation = ta * tb < 0 ? (power(std::abs(qa), p) + power(std::abs(qb), p)) /
                                                  (std::abs(p) * std::abs(qb - qa))
                                             : std::abs(k.delta);
       extra = 2 * DBL_EPSILON / std::abs(alpha) * variation * h;

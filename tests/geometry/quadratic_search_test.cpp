@@ -228,7 +228,7 @@ TEST(GeometryQuadraticIntersectLine, AllCrossingsMatchTheDenseReference) {
     const Arc arc = draw_arc(rng, curve_index % 3 == 0);
     spirals += arc.spiral;
     const QuadraticLaCurve& c = arc.c;
-    const double turning = std::abs(c.theta_at_s(arc.s1) - c.theta_at_s(arc.s0)), L = arc.s1 - arc.s0;
+    const double L = arc.s1 - arc.s0;
     const Reference ref(c, arc.s0, arc.s1, 1000);
     const size_t n = ref.samples.size();
     for (int li = 0; li < 4; ++li) {
