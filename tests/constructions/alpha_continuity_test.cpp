@@ -116,8 +116,9 @@ Values check_g2(const G2Problem& pr) {
     const double theta_end = integrated_theta_end(segs[j]);
     const double next = j + 1 < segs.size() ? segs[j + 1].theta_start() : pr.end.theta;
     EXPECT_LE(std::abs(wrap(theta_end - next)), kJointTol) << at << ", joint " << j;
-    if (j + 1 < segs.size())
+    if (j + 1 < segs.size()) {
       EXPECT_LE(std::abs(segs[j].kappa_end() - segs[j + 1].kappa_start()) * chord, kEndTol) << at << ", joint " << j;
+    }
   }
   return {c.length() / chord, c.kappa_at(0) * chord, c.kappa_at(c.length()) * chord};
 }

@@ -371,8 +371,9 @@ TEST(G1Hermite, SearchUpToMaxTurningStatesItsScope) {
       const detail::LinearQ seg{0, 1, lambda * qa, lambda * qb, 0.006715675300449142};
       ASSERT_NEAR(seg.turning(law), delta, 1e-9 * std::abs(delta));
       const std::complex<double> I = detail::integrate_tangent_reference(law, seg);
-      if (x > -30 && previous.real() > 0 && I.real() > 0)
+      if (x > -30 && previous.real() > 0 && I.real() > 0) {
         EXPECT_FALSE((previous.imag() > 0) != (I.imag() > 0)) << "k " << k << " x " << x;
+      }
       previous = I;
     }
   }

@@ -259,8 +259,9 @@ TEST(HermiteRobustness, G2AndSCurveStopAtTheEvaluationBudget) {
     SCOPED_TRACE(std::string(to_string(solver)));
     // Since the offset form (small |α| in log|κ|) the trials no longer exhaust gauss-kronrod here
     // and a solver may stop on its own first; when the budget stops it, the message names it.
-    if (r.summary.status == Status::max_iterations)
+    if (r.summary.status == Status::max_iterations) {
       EXPECT_NE(r.summary.message.find("max_evaluations"), std::string::npos) << r.summary.message;
+    }
     EXPECT_LT(r.summary.evaluations, 4'000'000);  // the budget plus one trial curve's three integrals
     expect_finite(r);
   }

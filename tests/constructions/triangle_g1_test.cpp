@@ -170,7 +170,9 @@ TEST_P(EveryIntegratorAndSolver, AgreesWithTheReferenceAndTheDefault) {
     EXPECT_LE(rel(kappa_start(g), kappa_start(ref)), tol) << where;
     EXPECT_LE(rel(kappa_end(g), kappa_end(ref)), tol) << where;
     ASSERT_EQ(g.curve.segments().size(), c.compound ? 2u : 1u) << where;
-    if (c.compound) EXPECT_LE(std::abs(g.info.joint - ref.info.joint), tol * g.curve.length()) << where;
+    if (c.compound) {
+      EXPECT_LE(std::abs(g.info.joint - ref.info.joint), tol * g.curve.length()) << where;
+    }
   }
   EXPECT_GE(rows, 8);
 }
@@ -511,7 +513,9 @@ TEST(PlanarSegments, DrawableExactlyBelowTheLimitOfTheStartAngle) {
         const ControlTriangle t = base_angles(b0, turning - b0);
         const TriangleResult g = fam.r < 1 ? solve_compound(t, fam.alpha0, fam.alpha1, fam.r) : solve_g1(t, fam.alpha0);
         if (g.info.start_angle_limit) {
-          if (limit) EXPECT_NEAR(*limit, *g.info.start_angle_limit, 1e-14);  // depends on α0, α1, r and θ only
+          if (limit) {
+            EXPECT_NEAR(*limit, *g.info.start_angle_limit, 1e-14);  // depends on α0, α1, r and θ only
+          }
           limit = g.info.start_angle_limit;
         }
         if (g.usable()) {  // ok, or tolerance_not_met where the error bound exceeds the 1e-11 target
@@ -707,7 +711,9 @@ TEST(PlanarSegments, BeyondTheAcceptBoundIsInaccurate) {
     EXPECT_EQ(g.summary.status, Status::inaccurate) << g.summary.message;
     // summary.error where a curve was drawn; a trial curve already beyond the loosest accept ends
     // the search with that trial's status and message.
-    if (g.summary.error) EXPECT_GT(*g.summary.error, 1e-3);
+    if (g.summary.error) {
+      EXPECT_GT(*g.summary.error, 1e-3);
+    }
     EXPECT_NE(g.summary.message.find("accept"), std::string::npos) << g.summary.message;
     EXPECT_TRUE(g.curve.segments().empty());
   }

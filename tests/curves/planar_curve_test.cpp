@@ -231,7 +231,20 @@ TEST(Numeric, PowerMatchesStdPow) {
       }
     }
   }
-  for (double e : {-1.0 / 3, 0.3, 4.5, -4.5, 7.0, 1e-9})
+  // Thirds: against long double, the exponent k/3 exact there (std::pow(x, k/3.0) differs by
+  // |log x|·ulp(k/3) from x^(k/3) itself).
+  for (int k = -8; k <= 8; ++k) {
+    if (k % 3 == 0) continue;
+    for (double x : xs) {
+      if (x == 0) continue;
+      const long double want = std::pow(static_cast<long double>(x), static_cast<long double>(k) / 3);
+      const double got = power(x, k / 3.0);
+      EXPECT_LE(std::abs(got - want), 12 * std::numeric_limits<double>::epsilon() * std::abs(want)) << x << "^" << k << "/3";
+    }
+  }
+  EXPECT_EQ(power(0.0, 2.0 / 3), 0.0);
+  EXPECT_EQ(power(0.0, -1.0 / 3), HUGE_VAL);
+  for (double e : {0.3, 4.5, -4.5, 7.0, 3.0 + 1.0 / 3, 1e-9})
     for (double x : xs) EXPECT_EQ(power(x, e), std::pow(x, e)) << x << "^" << e;
   EXPECT_EQ(power(-2.0, 3.0), -8.0);
   EXPECT_EQ(power(-2.0, -2.0), 0.25);

@@ -147,13 +147,17 @@ TEST(QuadraticExport, StructureAndContinuity) {
     ASSERT_EQ(reduced.summary.status, Status::ok) << reduced.summary.message;
     EXPECT_LT(reduced.curve.control_points.size(), r.curve.control_points.size());
     EXPECT_LE(reduced.info.max_deviation, 1e-7);
-    if (degree == 5) EXPECT_TRUE(reduced.info.curvature_monotone);
+    if (degree == 5) {
+      EXPECT_TRUE(reduced.info.curvature_monotone);
+    }
     r.curve.validate();
     EXPECT_EQ(r.curve.degree, degree);
     EXPECT_EQ(r.curve.control_points.size(), static_cast<size_t>(degree == 3 ? 2 * r.info.spans + 2 : 3 * r.info.spans + 3));
     EXPECT_EQ(r.info.continuity, degree == 3 ? "G1" : "G2");
     EXPECT_DOUBLE_EQ(r.curve.knots.back(), range.hi - range.lo);
-    if (degree == 5) EXPECT_TRUE(r.info.curvature_monotone);
+    if (degree == 5) {
+      EXPECT_TRUE(r.info.curvature_monotone);
+    }
     // The ends: the curve's own positions (quadrature from s = 0).
     const PlanarEvaluation e0 = evaluate(c, range.lo), e1 = evaluate(c, range.hi);
     EXPECT_LT(std::abs(r.curve.point_at(0) - e0.position), 1e-12);
