@@ -6,10 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+#include <array>
 #include <cmath>
+#include <iomanip>
+#include <iostream>
 #include <cstdlib>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "lac/curves/planar/detail/linear_q.hpp"
 #include "lac/curves/planar/la_segment_kernel.hpp"
@@ -93,6 +98,45 @@ TEST(G1Hermite, ClothoidMatchesMpmathReferenceOnAll2000) {
 // (chord near a tangent: end-curvature ratios up to ~1e6; α > 0: q's zero just beyond an end;
 // α = 0: κ ∝ e^(bu) with large |b|). The graded fast path it replaced missed p1 by up to 4.9e-7 at
 // α = −0.1 and 6e-4 (tolerance_not_met) on steep α > 0 solutions.
+// The α = −1 start (constructions/g1_hermite.cpp, kClothoidGuessFit): A = 3(φ0 + φ1)·R(s², d²),
+// s = (φ0 + φ1)/π, d = (φ0 − φ1)/π, R cubic in s², d². This test is its generator: the least-squares
+// fit to the solved A on the 80 × 80 grid of (φ0, φ1) ∈ (−0.97π, 0.97π)² (least turning), printed;
+// the fit must come within 1.1e-3 of A there, and the shipped start must make Newton converge in
+// at most 3 iterations on average over the 2000-problem set (3.66 with R ≡ 1).
+TEST(G1Hermite, ClothoidGuessFit) {
+  const double pi = std::numbers::pi;
+  constexpr int kGrid = 80, kTerms = 10;
+  std::vector<std::array<double, kTerms>> rows;
+  std::vector<double> solved;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const double p0 = pi * (-0.97 + 1.94 * (i + 0.5) / kGrid), p1 = pi * (-0.97 + 1.94 * (j + 0.5) / kGrid);
+      const G1HermiteResult r = solve_g1_hermite({{0, 0}, p0, {1, 0}, p1, -1.0});
+      if (!r.usable() || r.info.winding != 0) continue;
+      const double a = r.info.phi0, b = r.info.phi1, base = 3 * (a + b);
+      const double s2 = (a + b) * (a + b) / (pi * pi), d2 = (a - b) * (a - b) / (pi * pi);
+      rows.push_back({base, base * s2, base * d2, base * s2 * s2, base * s2 * d2, base * d2 * d2, base * s2 * s2 * s2,
+                      base * s2 * s2 * d2, base * s2 * d2 * d2, base * d2 * d2 * d2});
+      solved.push_back(r.info.x);
+    }
+  ASSERT_GT(solved.size(), 4000u);
+  Eigen::MatrixXd M(static_cast<Eigen::Index>(rows.size()), kTerms);
+  Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+  for (size_t n = 0; n < rows.size(); ++n) {
+    for (int k = 0; k < kTerms; ++k) M(static_cast<Eigen::Index>(n), k) = rows[n][static_cast<size_t>(k)];
+    y(static_cast<Eigen::Index>(n)) = solved[n];
+  }
+  const Eigen::VectorXd c = M.colPivHouseholderQr().solve(y);
+  std::cout << "clothoid guess fit:" << std::setprecision(6);
+  for (int k = 0; k < kTerms; ++k) std::cout << " " << c(k);
+  std::cout << "\n";
+  EXPECT_LE((M * c - y).cwiseAbs().maxCoeff(), 1.1e-3);
+  double iterations = 0;
+  const auto set = test::g1_problem_set();
+  for (const auto& a : set) iterations += solve_g1_hermite({{0, 0}, a.theta0, {1, 0}, a.theta1, -1.0}).summary.iterations;
+  EXPECT_LE(iterations / static_cast<double>(set.size()), 3.0);
+}
+
 TEST(G1Hermite, SampledCurveReachesP1OnSteepSolutions) {
   const auto set = test::g1_problem_set(300, 20261124);
   double worst = 0;
