@@ -184,7 +184,8 @@ SpaceExportResult to_bspline(const SpaceCurve& curve, const ExportOptions& optio
   std::vector<double> joints;  // the knots where one piece ends and the next begins
   for (size_t k = 1; k < cps.size(); ++k) joints.push_back(curve.piece_start(k));
   detail::finish_hermite_export(r, p, pieces, junction, knots, all_g2, totals, tol, length, "deviation bound", t_start,
-                                [](const BSpline3&, SpaceExportInfo&) {}, options.remove_knots, joints, options.fit);
+                                [](const BSpline3&, SpaceExportInfo&) {}, options.remove_knots, joints, options.fit,
+                                options.fit_max_degree);
   return r;
 }
 

@@ -349,7 +349,8 @@ ExportResult certified_bspline_once(const std::vector<const SpanSource*>& parts,
                         [&](const BSpline& b, ExportInfo& info) {
                           if (check) check(b, info);
                         },
-                        options.remove_knots, std::vector<double>(starts.begin() + 1, starts.end() - 1), options.fit);
+                        options.remove_knots, std::vector<double>(starts.begin() + 1, starts.end() - 1), options.fit,
+                        options.fit_max_degree);
   return r;
 }
 
@@ -440,6 +441,9 @@ void detail::validate_export_options(const ExportOptions& options) {
     throw_input_error(kWho, "tolerance", options.tolerance, "[0, inf) (0: 1e-6 x length)");
   if (options.max_spans < 1) throw_input_error(kWho, "max_spans", static_cast<double>(options.max_spans), "[1, inf)");
   if (options.degree != 3 && options.degree != 5) throw_input_error(kWho, "degree", options.degree, "3 or 5");
+  if (options.fit_max_degree != 0 && (options.fit_max_degree < 3 || options.fit_max_degree > kMaxFitDegree))
+    throw_input_error(kWho, "fit_max_degree", options.fit_max_degree,
+                      "0 (the fit has the degree `degree`) or [3, " + std::to_string(kMaxFitDegree) + "]");
 }
 
 bool curvature_monotone(const BSpline& b, const PlanarCurve& curve, long* monotone_segments, double* max_jump,

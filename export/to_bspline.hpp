@@ -58,7 +58,17 @@ struct ExportOptions {
   /// its curvature follows the LA curve's less closely (its LCG is less straight:
   /// results/export_lcg.md), so it is not the default. Joints and end data as above.
   bool fit = false;
+  /// With fit: fits of every degree from 3 up to this are tried, and the one with the fewest
+  /// control points kept (a higher degree carries more of a smooth segment per span, as
+  /// OpenCASCADE's approximation chooses its degree from 3 to 8; a lower one needs fewer points
+  /// around the joints). Inside each LA segment the fit of degree q is C^(q−1); at the joints and the
+  /// ends it keeps the continuity and end data of `degree` (G2 for 5: the cubic fit is then C2 at a
+  /// G2 joint). 0: the fit has the degree `degree`; else [3, kMaxFitDegree].
+  int fit_max_degree = 0;
 };
+
+/// The highest degree ExportOptions::fit_max_degree allows.
+inline constexpr int kMaxFitDegree = 9;
 
 struct ExportInfo {
   double tolerance = 0;        ///< the tolerance used (absolute)

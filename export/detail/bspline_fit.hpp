@@ -3,14 +3,15 @@
 // by least squares reweighted toward the minimax (Lawson), with a proven distance to H
 // (docs/export.md, "Fewer control points").
 //
-// The fit B has H's degree p, simple knots inside each smooth part (C^(p−1)), uniform in the index
-// of H's spans, and at the joints of the curve's parts H's knot multiplicity (the continuity the
-// curve has there).
+// The fit B has a degree q ≥ 3 (H's degree p or another), simple knots inside each smooth part
+// (C^(q−1)), uniform in the index of H's spans, and at the joints of the curve's parts the
+// continuity H has there (multiplicity q − p + H's).
 // Its first and last points, tangents and (p ≥ 5) second derivatives are H's, so B keeps the curve's
 // end data. The distance |B(t) − H(t)| is bounded exactly: both are written as Bézier pieces
-// (bezier_pieces_on, export/detail/bspline_core.hpp) on the union of their knots, and the difference of two Bézier pieces of
-// one degree on one interval is at most the largest distance of their control points (the
-// Bernstein basis is a nonnegative partition of unity). With H's own certified bound on each of its
+// (bezier_pieces_on, export/detail/bspline_core.hpp) on the union of their knots, the one of lower
+// degree raised to the other's (exactly: convex combinations of its points), and the difference of
+// two Bézier pieces of one degree on one interval is at most the largest distance of their control
+// points (the Bernstein basis is a nonnegative partition of unity). With H's own certified bound on each of its
 // spans the triangle inequality gives B's. Written by hand: the fitting and refinement are the
 // textbook algorithms (The NURBS Book A2.2, §5.3, §9.4.1); Eigen solves the normal equations.
 #include <Eigen/Sparse>
@@ -90,6 +91,23 @@ void reverse_bspline(std::vector<double>& U, std::vector<P>& pts) {
 /// Rounds of Lawson's reweighting in fit_bspline (1: plain least squares).
 inline constexpr int kLawsonRounds = 8;
 
+/// The same Bézier piece written in degree q ≥ its own (degree elevation, The NURBS Book Eq. 5.36,
+/// once per degree: each new point a convex combination of two old ones).
+template <class P>
+std::vector<P> elevate_bezier(std::vector<P> piece, int q) {
+  while (static_cast<int>(piece.size()) - 1 < q) {
+    const int r = static_cast<int>(piece.size()) - 1;
+    std::vector<P> up(r + 2, piece[0]);
+    up[r + 1] = piece[r];
+    for (int i = 1; i <= r; ++i) {
+      const double a = static_cast<double>(i) / (r + 1);
+      up[i] = a * piece[i - 1] + (1 - a) * piece[i];
+    }
+    piece.swap(up);
+  }
+  return piece;
+}
+
 template <class P>
 struct FittedBSpline {
   std::vector<double> knots;
@@ -97,18 +115,19 @@ struct FittedBSpline {
   double deviation = HUGE_VAL;  ///< proven bound on |B − curve|: |B − H| plus H's span bounds
 };
 
-/// The fit with about `spans` knot spans in all (each part at least one), certified against H
-/// (degree p, knots UH, points PH; `span_knots` its Hermite span ends with `span_deviation` each,
-/// `fixed` the joints). deviation stays +inf when there are too few points to fit or the solve fails.
+/// The fit of degree q (≥ 3) with about `spans` knot spans in all (each part at least one),
+/// certified against H (degree p, knots UH, points PH; `span_knots` its Hermite span ends with
+/// `span_deviation` each, `fixed` the joints). deviation stays +inf when there are too few points to
+/// fit or the solve fails.
 template <class P>
-FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::vector<P>& PH,
+FittedBSpline<P> fit_bspline(int p, int q, const std::vector<double>& UH, const std::vector<P>& PH,
                              const std::vector<double>& span_knots, const std::vector<double>& span_deviation,
                              const std::vector<double>& fixed, long spans) {
   FittedBSpline<P> out;
   const double a = UH[p], b = UH[UH.size() - 1 - p], length = b - a;
-  // Knots: inside each part uniform in the index of H's spans, the joints with H's multiplicity.
+  // Knots: inside each part uniform in the index of H's spans, the joints with H's continuity.
   std::vector<double>& U = out.knots;
-  U.assign(p + 1, a);
+  U.assign(q + 1, a);
   double from = a;
   std::vector<double> ends;
   for (double f : fixed)
@@ -128,29 +147,29 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
       U.push_back(lo + (hi - lo) * (x - static_cast<double>(j)));
     }
     const auto range = std::equal_range(UH.begin(), UH.end(), to);
-    const long m = to == b ? p + 1 : std::min<long>(p - 1, range.second - range.first);
+    const long m = to == b ? q + 1 : q - p + std::min<long>(p - 1, range.second - range.first);
     for (long i = 0; i < m; ++i) U.push_back(to);
     from = to;
   }
   const int fixed_count = p >= 5 ? 3 : 2;
-  const size_t n = U.size() - p - 1;
-  if (n < static_cast<size_t>(2 * fixed_count) || U[p + 1] == a || U[p + 2] == a) return out;
+  const size_t n = U.size() - q - 1;
+  if (n < static_cast<size_t>(2 * fixed_count) || U[q + 1] == a || U[q + 2] == a) return out;
   std::vector<P>& pts = out.points;
   pts.assign(n, PH[0]);
   {  // end data: H's value and derivatives at both ends
     P d0, d1, d2;
     start_derivatives(p, UH, PH, d0, d1, d2);
-    start_points(p, U, d0, d1, d2, fixed_count, pts);
+    start_points(q, U, d0, d1, d2, fixed_count, pts);
     std::vector<double> UHr = UH, Ur = U;
     std::vector<P> PHr = PH, Pr = pts;
     reverse_bspline(UHr, PHr);
     reverse_bspline(Ur, Pr);
-    if (Ur[p + 1] == Ur[p] || Ur[p + 2] == Ur[p]) return out;
+    if (Ur[q + 1] == Ur[q] || Ur[q + 2] == Ur[q]) return out;
     start_derivatives(p, UHr, PHr, d0, d1, d2);
-    start_points(p, Ur, d0, d1, d2, fixed_count, Pr);
+    start_points(q, Ur, d0, d1, d2, fixed_count, Pr);
     for (int i = 0; i < fixed_count; ++i) pts[n - 1 - i] = Pr[i];
   }
-  // Least squares at 2p + 2 Chebyshev points of each knot span, against H. Unknowns: the free
+  // Least squares at 2q + 2 Chebyshev points of each knot span, against H. Unknowns: the free
   // points (indices fixed_count … n − 1 − fixed_count, every coordinate) and, for the cubic, the
   // lengths λ of the end tangents (points 1 and n − 2 at P0 + λT0 and P_{n−1} − λT1: the
   // tangents' directions kept, G1 end data; the quintic keeps its second points, hence G2).
@@ -174,15 +193,15 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
     };
     std::vector<Sample> samples;
     std::vector<double> N;
-    const int m = 2 * p + 2;
-    for (size_t k = p; k + p + 1 < U.size(); ++k) {
+    const int m = 2 * q + 2;
+    for (size_t k = q; k + q + 1 < U.size(); ++k) {
       if (!(U[k + 1] > U[k])) continue;
       for (int j = 0; j < m; ++j) {
         const double t = U[k] + (U[k + 1] - U[k]) * 0.5 * (1 - std::cos(M_PI * (j + 0.5) / m));
-        basis_functions(p, U, k, t, N);
+        basis_functions(q, U, k, t, N);
         Sample sample{{}, de_boor(p, UH, PH, {}, t)};
-        for (int i = 0; i <= p; ++i) {
-          const size_t gi = k - p + i;
+        for (int i = 0; i <= q; ++i) {
+          const size_t gi = k - q + i;
           if (gi >= free_begin && gi < free_end) {
             for (int d = 0; d < D; ++d) {
               P unit = pts[0] - pts[0];
@@ -243,7 +262,7 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
   // Certification on the union of the two knot sets.
   std::vector<double> breaks;
   for (size_t i = p; i + p < UH.size(); ++i) breaks.push_back(UH[i]);
-  for (size_t i = p; i + p < U.size(); ++i) breaks.push_back(U[i]);
+  for (size_t i = q; i + q < U.size(); ++i) breaks.push_back(U[i]);
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   {  // each interval in quarters: the control polygons' distance nears the curves' (O(h²) closer)
@@ -257,17 +276,19 @@ FittedBSpline<P> fit_bspline(int p, const std::vector<double>& UH, const std::ve
     }
     breaks.swap(finer);
   }
-  const auto pb = bezier_pieces_on(p, U, pts, breaks);
+  const auto pb = bezier_pieces_on(q, U, pts, breaks);
   const auto ph = bezier_pieces_on(p, UH, PH, breaks);
+  const int r = std::max(p, q);
   double worst = 0;
   for (size_t j = 0; j < pb.size(); ++j) {
+    const std::vector<P> bj = elevate_bezier(pb[j], r), hj = elevate_bezier(ph[j], r);
     double e = 0, size = 0;
-    for (int i = 0; i <= p; ++i) {
-      e = std::max(e, point_norm(P(pb[j][i] - ph[j][i])));
-      size = std::max(size, point_norm(pb[j][i]) + point_norm(ph[j][i]));
+    for (int i = 0; i <= r; ++i) {
+      e = std::max(e, point_norm(P(bj[i] - hj[i])));
+      size = std::max(size, point_norm(bj[i]) + point_norm(hj[i]));
     }
-    // Rounding of the blossoms (p levels of convex combinations).
-    e += (64 + 8 * p * p) * DBL_EPSILON * size;
+    // Rounding of the blossoms and the elevation (at most r levels of convex combinations each).
+    e += (64 + 16 * r * r) * DBL_EPSILON * size;
     const double mid = 0.5 * (breaks[j] + breaks[j + 1]);
     size_t k = static_cast<size_t>(std::upper_bound(span_knots.begin(), span_knots.end(), mid) - span_knots.begin());
     k = std::min(k == 0 ? 0 : k - 1, span_deviation.size() - 1);

@@ -50,8 +50,13 @@ py::dict bspline_dict(const R& r) {
 
 constexpr lac::ExportNames kNames{"export_curve", "path", "tolerance", "degree"};
 
-lac::ExportOptions options(double tolerance, int degree, long max_spans, bool remove_knots, bool fit) {
-  return {.tolerance = tolerance, .max_spans = max_spans, .degree = degree, .remove_knots = remove_knots, .fit = fit};
+lac::ExportOptions options(double tolerance, int degree, long max_spans, bool remove_knots, bool fit, int fit_max_degree) {
+  return {.tolerance = tolerance,
+          .max_spans = max_spans,
+          .degree = degree,
+          .remove_knots = remove_knots,
+          .fit = fit,
+          .fit_max_degree = fit_max_degree};
 }
 
 /// The B-spline `make()` returns (a to_bspline call), computed with the GIL released, as a dict.
@@ -85,18 +90,22 @@ py::dict written(const std::string& path, const lac::PreparedExport& prepared, W
 void bind_export(py::module_& m) {
   m.def(
       "to_bspline",
-      [](const Curve& c, double tolerance, int degree, long max_spans, bool remove_knots, bool fit) {
-        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans, remove_knots, fit)); });
+      [](const Curve& c, double tolerance, int degree, long max_spans, bool remove_knots, bool fit,
+         int fit_max_degree) {
+        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans, remove_knots, fit, fit_max_degree)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
-      py::arg("remove_knots") = true, py::arg("fit") = false,
+      py::arg("remove_knots") = true, py::arg("fit") = false, py::arg("fit_max_degree") = 0,
       "The curve as a B-spline with a certified bound on its deviation (docs/export.md): a dict with status, "
       "usable, degree, knots, control_points (n x 2), weights (None: polynomial), tolerance (absolute; 0 asks "
       "for 1e-6 x length), max_deviation (the certified bound), spans, curvature_monotone, continuity. "
       "degree 5 (default): G2 quintic spans; 3: G1 cubic ones. remove_knots (default True): the knots inside each "
       "LA segment removed within the tolerance (fewer control points); False: the Hermite spans' knots. fit "
       "(default False): also a least-squares fit with a proven bound, taken where it needs fewer points (its "
-      "curvature follows the LA curve less closely). A bound above the tolerance: status inaccurate.");
+      "curvature follows the LA curve less closely); fit_max_degree (default 0: the fit has the degree `degree`): fits "
+      "of every degree from 3 up to this (at most 9) are tried and the fewest control points kept, with the "
+      "continuity of `degree` at joints and ends. A bound above the "
+      "tolerance: status inaccurate.");
   m.def(
       "export_curve",
       [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree) {
@@ -116,13 +125,14 @@ void bind_export(py::module_& m) {
   m.def(
       "to_bspline",
       [arc](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to, double tolerance,
-            int degree, long max_spans, bool remove_knots, bool fit) {
+            int degree, long max_spans, bool remove_knots, bool fit,
+         int fit_max_degree) {
         const auto [s0, s1] = arc(c, s_from, s_to);
-        return bspline_of([&] { return lac::to_bspline(c, s0, s1, options(tolerance, degree, max_spans, remove_knots, fit)); });
+        return bspline_of([&] { return lac::to_bspline(c, s0, s1, options(tolerance, degree, max_spans, remove_knots, fit, fit_max_degree)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
       py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000, py::arg("remove_knots") = true,
-      py::arg("fit") = false,
+      py::arg("fit") = false, py::arg("fit_max_degree") = 0,
       "The arc [s_from, s_to] of a quadratic LA curve (default: its default_range, as `lac quadratic` draws) "
       "as a certified B-spline, the same dict; its parameter is the arc length from s_from.");
   m.def(
@@ -140,11 +150,12 @@ void bind_export(py::module_& m) {
 
   m.def(
       "to_bspline",
-      [](const SpaceCurve& c, double tolerance, int degree, long max_spans, bool remove_knots, bool fit) {
-        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans, remove_knots, fit)); });
+      [](const SpaceCurve& c, double tolerance, int degree, long max_spans, bool remove_knots, bool fit,
+         int fit_max_degree) {
+        return bspline_of([&] { return lac::to_bspline(c.curve, options(tolerance, degree, max_spans, remove_knots, fit, fit_max_degree)); });
       },
       py::arg("curve"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = 5, py::arg("max_spans") = 1'000'000,
-      py::arg("remove_knots") = true, py::arg("fit") = false,
+      py::arg("remove_knots") = true, py::arg("fit") = false, py::arg("fit_max_degree") = 0,
       "A space curve (lac.SpaceCurve) as a B-spline in space within max_deviation (docs/export.md): the same dict "
       "with control_points n x 3 and curvature_monotone None.");
   m.def(

@@ -50,6 +50,13 @@ def test_bspline_within_its_certified_bound(curve, degree):
     assert f["usable"] and len(f["control_points"]) <= len(cp) and f["max_deviation"] <= 1e-6
     got = np.array([de_boor(f["knots"], f["control_points"], degree, t) for t in s])
     assert np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y).max() <= f["max_deviation"]
+    # fit_max_degree=8: fits of degree 3 to 8, at most as many points as the fit of `degree`.
+    g = lac.to_bspline(curve, tolerance=1e-6, degree=degree, fit=True, fit_max_degree=8)
+    assert g["usable"] and len(g["control_points"]) <= len(f["control_points"]) and 3 <= g["degree"] <= 8
+    got = np.array([de_boor(g["knots"], g["control_points"], g["degree"], t) for t in s])
+    assert np.hypot(got[:, 0] - pts.x, got[:, 1] - pts.y).max() <= g["max_deviation"] <= 1e-6
+    with pytest.raises(ValueError, match="fit_max_degree"):
+        lac.to_bspline(curve, fit=True, fit_max_degree=10)
 
 
 def test_tolerance_beyond_reach_is_inaccurate(curve):

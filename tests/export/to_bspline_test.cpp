@@ -4,11 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 #include "lac/common/error.hpp"
 #include "lac/constructions/chain.hpp"
+#include "lac/constructions/g1_hermite.hpp"
 #include "lac/constructions/g2_hermite.hpp"
+#include "lac/export/detail/bspline_fit.hpp"
 #include "lac/export/write.hpp"
 #include "lac/integrators/registry.hpp"
 #include "tests/export/random_curves.hpp"
@@ -141,6 +145,64 @@ TEST(ToBspline, ReductionKeepsTheJointsAndTheBound) {
     }
 }
 
+// Fits of degree 3 to 8 (fit_max_degree): on a single smooth segment at a tight tolerance a higher
+// degree needs fewer points than the quintic fit; on the three-segment G2 curve the joints stay
+// at least C2 (curvature continuous), the end curvatures are the curve's, and the bound is certified.
+TEST(ToBspline, FitsOfHigherDegreeKeepTheEndDataAndTheBound) {
+  const G1HermiteResult g1 = solve_g1_hermite({{0, 0}, 0, {2, 1}, std::numbers::pi / 4, -0.5});
+  ASSERT_TRUE(g1.usable());
+  const double tol = 1e-9;
+  const ExportResult quintic = to_bspline(g1.curve, {.tolerance = tol, .fit = true});
+  const ExportResult higher = to_bspline(g1.curve, {.tolerance = tol, .fit = true, .fit_max_degree = 8});
+  ASSERT_TRUE(quintic.usable() && higher.usable()) << higher.summary.message;
+  EXPECT_GT(higher.curve.degree, 5);
+  EXPECT_LT(higher.curve.control_points.size(), quintic.curve.control_points.size());
+  EXPECT_LE(measured_deviation(g1.curve, higher.curve, 24), higher.info.max_deviation);
+  std::printf("G1 segment at %g: quintic fit %zu points, fit of degree <= 8: %zu points (degree %d)\n", tol,
+              quintic.curve.control_points.size(), higher.curve.control_points.size(), higher.curve.degree);
+
+  const PlanarCurve c = acceptance_curve();
+  for (double t : {1e-3, 1e-6, 1e-9}) {
+    const ExportResult r = to_bspline(c, {.tolerance = t, .fit = true, .fit_max_degree = 8});
+    ASSERT_TRUE(r.usable()) << r.summary.message;
+    r.curve.validate();
+    EXPECT_LE(r.info.max_deviation, t);
+    EXPECT_LE(measured_deviation(c, r.curve, 24), r.info.max_deviation) << "tol " << t;
+    std::vector<double> k;
+    std::vector<int> m;
+    r.curve.distinct_knots(k, m);
+    for (size_t j = 1; j < c.segments().size(); ++j) {
+      const auto it = std::find(k.begin(), k.end(), c.segment_start(j));
+      ASSERT_NE(it, k.end()) << "joint " << j;
+      EXPECT_LE(m[it - k.begin()], r.curve.degree - 2) << "joint " << j << " tol " << t;
+    }
+    EXPECT_LE(r.info.max_curvature_jump, 1e-9) << "tol " << t;
+    // End curvatures: the B-spline's (from its end control points) against the curve's.
+    for (const bool end : {false, true}) {
+      std::vector<double> U = r.curve.knots;
+      std::vector<std::complex<double>> P = r.curve.control_points;
+      if (end) detail::reverse_bspline(U, P);
+      std::complex<double> d0, d1, d2;
+      detail::start_derivatives(r.curve.degree, U, P, d0, d1, d2);
+      const double kappa = (d1.real() * d2.imag() - d1.imag() * d2.real()) / std::pow(std::abs(d1), 3) * (end ? -1 : 1);
+      const double want = end ? c.segments().back().kappa_end() : c.segments().front().kappa_start();
+      EXPECT_NEAR(kappa, want, 1e-9 * (std::abs(want) + 1 / c.length())) << "tol " << t << (end ? " end" : " start");
+    }
+  }
+}
+
+TEST(ToBspline, FitMaxDegreeOutOfRangeIsAnInputError) {
+  const PlanarCurve c = acceptance_curve();
+  for (const int d : {-1, 1, 2, 10}) {
+    try {
+      to_bspline(c, {.fit = true, .fit_max_degree = d});
+      ADD_FAILURE() << "fit_max_degree " << d << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("fit_max_degree"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(ToBspline, DefaultToleranceIsRelativeToLength) {
   const PlanarCurve c = acceptance_curve();
   const ExportResult r = to_bspline(c);
@@ -181,7 +243,9 @@ TEST(ToBspline, BoundIsCertifiedOnRandomCurves) {
       continue;  // a random law out of the segment's domain
     }
     const double tol = (i % 3 == 0 ? 1e-3 : i % 3 == 1 ? 1e-6 : 1e-9) * c.length();
-    const ExportResult r = to_bspline(c, {.tolerance = tol, .degree = i % 2 == 0 ? 5 : 3, .fit = i % 4 >= 2});  // half with the fit
+    // Half with the fit, a quarter of all with fits of degree 3 to 8.
+    const ExportResult r = to_bspline(
+        c, {.tolerance = tol, .degree = i % 2 == 0 ? 5 : 3, .fit = i % 4 >= 2, .fit_max_degree = i % 8 >= 6 ? 8 : 0});
     if (!r.usable() && r.summary.status == Status::inaccurate && r.info.positions > 0.1 * tol) {
       // The curve's own positions are not known to the tolerance (e.g. α near 0 in the plain form,
       // a near-step curvature): the export says inaccurate, as it must.
