@@ -420,12 +420,14 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
       else last_why = t.why;
     }
   };
+  // The method of the run that found the curve: opt.solver, or simplex for the fallback run.
+  NonlinearMethod solved_by = opt.solver;
   auto finish = [&](SpaceResult r) {
     r.summary.iterations = iterations;
     r.summary.constructions = evals;
     r.summary.evaluations = ode;
     r.summary.integrator = std::string(to_string(opt.integrator.method));
-    r.summary.solver = std::string(to_string(opt.solver));
+    r.summary.solver = std::string(to_string(solved_by));
     r.info.runs = runs;
     r.summary.seconds = seconds_since(t_begin);
     return r;
@@ -443,7 +445,14 @@ SpaceResult solve(const char* who, const SpaceEndpoints& ends, const CompoundSpa
       ode += t.ode_evaluations;
       ++evals;
       SpaceResult r = to_result(pb, t);
-      if (r.summary.status == Status::ok) return finish(std::move(r));
+      if (r.summary.status == Status::ok) {
+        if (method != opt.solver) {
+          solved_by = method;
+          r.summary.message = std::string(to_string(opt.solver)) + " found no curve; solved by a " +
+                              std::string(to_string(method)) + " run from its closest stop";
+        }
+        return finish(std::move(r));
+      }
       out.status = Status::not_converged;
       out.message = "the solver's solution did not reproduce: " + r.summary.message;
     }

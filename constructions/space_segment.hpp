@@ -65,7 +65,8 @@ struct SpaceSegmentOptions {
   /// Solver runs: first from the start (hand with the smaller end-tangent error); if that fails,
   /// a 7 × 6 grid in (log Λ0, log ν0) around the start is screened (both hands) and the solver is
   /// rerun from the best grid points; newton and ceres then get one simplex run from the closest
-  /// stop when it is within 0.05 rad of the end tangent (docs/space_curves.md).
+  /// stop when it is within 0.05 rad of the end tangent (docs/space_curves.md); a curve found by
+  /// that run has summary.solver "simplex" and a message saying so.
   int max_starts = 6;
   bool allow_mirror = true;          ///< also try the mirror-image (negative torsion) problem
   long max_evaluations = 1500;       ///< curve constructions per solver run

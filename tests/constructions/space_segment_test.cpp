@@ -389,6 +389,22 @@ TEST(SpaceSegment, UndrawableConfigurationIsNotConvergedNotAnException) {
 // each stalled Newton iteration halving its step 30 times. Steps stop at 2^-12: the same data fail
 // in a quarter of the constructions, and the drawable cases solve as often as before
 // (results/space_solvers.md).
+// A curve that only the simplex fallback finds names the simplex as its solver (the drawable G1
+// configuration 139 of the solver experiment's set, seed 20110315, where Newton stops at a fold);
+// one Newton finds names Newton.
+TEST(SpaceSegment, CurveFoundByTheSimplexFallbackNamesIt) {
+  const auto g1 = cases(false, 140, 20110315);
+  const SpaceResult fallback = solve_case(g1[139]);
+  ASSERT_EQ(fallback.summary.status, Status::ok) << fallback.summary.message;
+  EXPECT_EQ(fallback.summary.solver, "simplex");
+  EXPECT_NE(fallback.summary.message.find("newton found no curve"), std::string::npos) << fallback.summary.message;
+  EXPECT_EQ(fallback.info.runs, SpaceSegmentOptions{}.max_starts + 1);
+  const SpaceResult direct = solve_case(g1[0]);
+  ASSERT_EQ(direct.summary.status, Status::ok) << direct.summary.message;
+  EXPECT_EQ(direct.summary.solver, "newton");
+  EXPECT_TRUE(direct.summary.message.empty()) << direct.summary.message;
+}
+
 TEST(SpaceSegment, FailingNewtonSolveIsShort) {
   const SpaceEndpoints e{Vec3::Zero(), Vec3::UnitX(), Vec3(1, 1, 0), Vec3(1, 1, 0.3)};
   const SpaceResult r = solve_g1_space_segment(e, {-1, 1, 0.2, TorsionType::type1});
