@@ -671,7 +671,9 @@ std::optional<LaSegmentDerivatives> segment_derivatives(const LaLaw& law, const 
   const double scale = law.log_form() ? 1.0 : std::max(std::abs(seg.qa), std::abs(seg.qb));
   if (!(std::abs(d) >= kLaDerivativeMinChange * scale) || !std::isfinite(scale)) return std::nullopt;
   const double p = alpha == 0 ? 0.0 : 1.0 - 1.0 / alpha;
-  if (!law.log_form() && std::abs(p) < 0.1) return std::nullopt;
+  // The plain form's closed form divides by p = 1 − 1/α: declined for 0 < |p| < 0.1, exact at α = 1.
+  const bool log_spiral = !law.log_form() && alpha == 1;
+  if (!law.log_form() && std::abs(p) < 0.1 && !log_spiral) return std::nullopt;
   const Complex i(0, 1);
   const double m = d / L, phib = seg.phi_b(law), ka = law.kappa_of_q(seg.qa), kb = law.kappa_of_q(seg.qb);
   const Complex ea = std::polar(1.0, seg.phi_a), eb = std::polar(1.0, phib);
@@ -681,6 +683,10 @@ std::optional<LaSegmentDerivatives> segment_derivatives(const LaLaw& law, const 
   Complex J;
   if (alpha == 0) {
     J = (-i * (eb - ea) - ka * I) / m;
+  } else if (log_spiral) {
+    // α = 1: κ = 1/q, so d/du[q(φ − φa)e^{iφ}] = m(φ − φa)e^{iφ} + e^{iφ} + i(φ − φa)e^{iφ}, and
+    // J = (qb(φb − φa)e^{iφb} − I)/(m + i).
+    J = (seg.qb * (phib - seg.phi_a) * eb - I) / (m + i);
   } else {
     const double ta = law.t_of_q(seg.qa), tb = law.t_of_q(seg.qb);
     const double c_over_p = law.log_form() ? law.sigma / (1.0 - alpha) : 1.0 / p;

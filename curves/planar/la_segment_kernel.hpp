@@ -88,8 +88,9 @@ inline constexpr double kLaDerivativeMinChange = 1e-4;
 /// integral: ∂φ/∂qa and ∂φ/∂qb along the segment are combinations of 1, κ, uκ and φ − φa; the
 /// integrals of κe^{iφ} and uκe^{iφ} follow by parts, and ∫(φ − φa)e^{iφ}du does too because F(q)
 /// is t·K(q)/p times dq/dt (la_law.hpp, p = 1 − 1/α; at α = 0, φ − φa = (κ − κa)/slope)
-/// (docs/g2_hermite.md "Jacobian"). nullopt where that form cancels: |qb − qa| below
-/// kLaDerivativeMinChange, |p| < 0.1 in the plain form (α near 1, F = log|q|), non-finite data.
+/// (docs/hermite.md "Jacobian"); at α = 1 (F = log|q|) by its own identity,
+/// (m + i)J = qb(φb − φa)e^{iφb} − I. nullopt where the form cancels: |qb − qa| below
+/// kLaDerivativeMinChange, 0 < |p| < 0.1 in the plain form (α near but not at 1), non-finite data.
 std::optional<LaSegmentDerivatives> segment_derivatives(const LaLaw& law, const detail::LinearQ& seg,
                                                         std::complex<double> integral);
 
