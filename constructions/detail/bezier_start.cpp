@@ -59,12 +59,12 @@ Basis basis(double t) {
 struct Derivs {
   Vec d1, d2, d3;
 };
-Derivs derivs(const Ctrl& P, double t) {
-  const Basis b = basis(t);
+Derivs derivs(const Ctrl& P, const Basis& b) {
   Derivs d{Vec::Zero(), Vec::Zero(), Vec::Zero()};
   for (int j = 0; j < 6; ++j) d.d1 += b.d1[j] * P[j], d.d2 += b.d2[j] * P[j], d.d3 += b.d3[j] * P[j];
   return d;
 }
+Derivs derivs(const Ctrl& P, double t) { return derivs(P, basis(t)); }
 
 // x^P for an integer P, by products; P = kNotInteger: x^power by std::pow.
 template <int P, class T>
@@ -104,13 +104,18 @@ void j_terms(T d1x, T d1y, T d2x, T d2y, T d3x, T d3y, T alpha2, T power, T& num
   num = std::sqrt(1 + rhs) * speed;
 }
 
-// J of one candidate by the N-point rule in double.
+// J of one candidate by the N-point rule in double (the rule's Bernstein weights computed once).
 template <size_t N>
 double j_of(const Ctrl& P, double alpha) {
   const auto& g = gauss_legendre_rule<N>();
+  static const std::array<Basis, N> bases = [&g] {
+    std::array<Basis, N> b;
+    for (size_t k = 0; k < N; ++k) b[k] = basis(g.nodes[k]);
+    return b;
+  }();
   double num = 0, len = 0;
   for (size_t k = 0; k < N; ++k) {
-    const Derivs d = derivs(P, g.nodes[k]);
+    const Derivs d = derivs(P, bases[k]);
     double n = 0, speed = 0;
     j_terms<double, kNotInteger>(d.d1.x(), d.d1.y(), d.d2.x(), d.d2.y(), d.d3.x(), d.d3.y(), alpha * alpha, -2 * alpha - 2, n, speed);
     num += g.weights[k] * n;
