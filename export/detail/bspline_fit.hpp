@@ -147,7 +147,7 @@ FittedBSpline<P> fit_bspline(int p, int q, const std::vector<double>& UH, const 
       U.push_back(lo + (hi - lo) * (x - static_cast<double>(j)));
     }
     const auto range = std::equal_range(UH.begin(), UH.end(), to);
-    const long m = to == b ? q + 1 : q - p + std::min<long>(p - 1, range.second - range.first);
+    const long m = to == b ? q + 1 : std::max(1L, q - p + std::min<long>(p - 1, range.second - range.first));
     for (long i = 0; i < m; ++i) U.push_back(to);
     from = to;
   }
