@@ -73,8 +73,9 @@ void add_export_with(Json& report, bool have, const CommonArgs& common, Prepare&
   const PreparedExport prepared = prepare(ExportRequest{.path = file,
                                                         .tolerance = common.export_tol.value_or(0.0),
                                                         .degree = common.export_degree,
-                                                        .comb = common.comb},
-                                          ExportNames{"lac", "export", "export-tol", "export-degree"});
+                                                        .comb = common.comb,
+                                                        .fit_max_degree = common.export_fit_degree},
+                                          ExportNames{"lac", "export", "export-tol", "export-degree", "export-fit-degree"});
   if (!have) {
     report["export"] = nullptr;
     return;

@@ -62,6 +62,10 @@ void add_export_options(CLI::App& sub, CommonArgs& a) {
   sub.add_option("--export-degree", a.export_degree,
                  "5: quintic spans, curvature continuous (G2; default) | 3: cubic spans (G1; the default and only "
                  "choice for .svg, whose paths hold cubic Beziers)");
+  sub.add_option("--export-fit-degree", a.export_fit_degree,
+                 "Fewest control points: also fit B-splines of degree 3 up to this (3-9; 3 for .svg) with a proven "
+                 "bound and keep the one with the fewest points (joints and end data as --export-degree gives them; "
+                 "its curvature follows the LA curve less closely than the default's)");
 }
 
 int sample_count(const CommonArgs& a) {

@@ -28,14 +28,17 @@ struct CommonArgs {
   double accept = kDefaultAccept;
   /// --export FILE (planar constructions, cli/export.hpp): the curve as a certified B-spline;
   /// --export DIR/ (a trailing slash): DIR/curve.<export_format>, with --batch DIR/curve_row<N>.….
-  std::string export_path;
+  std::string export_path{};
   /// --export-format: the format of an --export DIR/ (step | stp | iges | igs | dxf | svg; default
   /// step); with --export FILE it must name FILE's own extension.
-  std::optional<std::string> export_format;
+  std::optional<std::string> export_format{};
   /// --export-tol: bound on the export's deviation, absolute (default 1e-6 x the curve's length).
-  std::optional<double> export_tol;
+  std::optional<double> export_tol{};
   /// --export-degree: 5 (G2; the default) or 3 (G1; the only one for .svg, which holds cubic Béziers).
-  std::optional<int> export_degree;
+  std::optional<int> export_degree{};
+  /// --export-fit-degree: the B-spline fitted with a proven bound, degrees 3 up to this (3 … 9; 3
+  /// for .svg), the fewest control points kept (ExportOptions::fit_max_degree); unset: no fit.
+  std::optional<int> export_fit_degree{};
   /// --comb (planar commands): the curvature comb on the --format svg drawing (from the samples'
   /// kappa) and on an --export FILE.svg (the B-spline's own curvature, SvgOptions in
   /// export/write.hpp). InputError "comb" without either SVG output.
@@ -46,7 +49,8 @@ struct CommonArgs {
 /// when `planar`, --comb.
 void add_common_options(CLI::App& sub, CommonArgs& a, bool planar);
 
-/// Adds --export FILE|DIR/, --export-format F, --export-tol T and --export-degree D (cli/export.hpp).
+/// Adds --export FILE|DIR/, --export-format F, --export-tol T, --export-degree D and
+/// --export-fit-degree Q (cli/export.hpp).
 void add_export_options(CLI::App& sub, CommonArgs& a);
 
 /// Points to compute: --samples, or 200 for an SVG drawing without --samples. InputError

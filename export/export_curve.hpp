@@ -27,15 +27,20 @@ struct ExportRequest {
   std::optional<int> degree;   ///< 3 or 5; none: 3 for .svg (cubic Béziers), 5 otherwise
   long max_spans = 1'000'000;  ///< ExportOptions::max_spans
   bool comb = false;           ///< .svg: the B-spline's curvature comb (SvgOptions)
+  /// ExportOptions::fit with fit_max_degree = this (3 … kMaxFitDegree; 3 for .svg): fits of degree
+  /// 3 up to it, the fewest control points kept; none: no fit (the knot removal's B-spline).
+  std::optional<int> fit_max_degree{};
 };
 
 /// The caller's names of the request's fields, for its InputErrors (CLI: "lac", "export",
-/// "export-tol", "export-degree"; Python: "export_curve", "path", "tolerance", "degree").
+/// "export-tol", "export-degree", "export-fit-degree"; Python: "export_curve", "path", "tolerance",
+/// "degree", "fit_max_degree").
 struct ExportNames {
   const char* who;
   const char* path;
   const char* tolerance;
   const char* degree;
+  const char* fit_max_degree;
 };
 
 struct PreparedExport {
@@ -54,7 +59,7 @@ inline constexpr bool kExportsStepAndIges =
 
 /// Checks the request before any curve is computed: InputError naming the path for an unknown
 /// extension or STEP/IGES without OpenCASCADE, the tolerance unless ≥ 0 and finite, the degree
-/// unless 3 or 5 (3 for .svg).
+/// unless 3 or 5 (3 for .svg), the fit's largest degree unless in [3, kMaxFitDegree] (3 for .svg).
 inline PreparedExport prepare_export(const ExportRequest& request, const ExportNames& names) {
   PreparedExport p;
   p.format = export_format_from_path(request.path, names.path, names.who);
@@ -68,6 +73,15 @@ inline PreparedExport prepare_export(const ExportRequest& request, const ExportN
   if (degree != 3 && degree != 5) throw_input_error(names.who, names.degree, degree, "3 or 5");
   if (p.format == ExportFormat::svg && degree != 3)
     throw_input_error(names.who, names.degree, degree, "3 for .svg (SVG paths hold cubic Bezier curves)");
+  if (request.fit_max_degree) {
+    const int q = *request.fit_max_degree;
+    if (q < 3 || q > kMaxFitDegree)
+      throw_input_error(names.who, names.fit_max_degree, q, "[3, " + std::to_string(kMaxFitDegree) + "]");
+    if (p.format == ExportFormat::svg && q != 3)
+      throw_input_error(names.who, names.fit_max_degree, q, "3 for .svg (SVG paths hold cubic Bezier curves)");
+    p.options.fit = true;
+    p.options.fit_max_degree = q;
+  }
   p.options.tolerance = request.tolerance;
   p.options.degree = degree;
   p.options.max_spans = request.max_spans;

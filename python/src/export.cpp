@@ -48,7 +48,7 @@ py::dict bspline_dict(const R& r) {
   return d;
 }
 
-constexpr lac::ExportNames kNames{"export_curve", "path", "tolerance", "degree"};
+constexpr lac::ExportNames kNames{"export_curve", "path", "tolerance", "degree", "fit_max_degree"};
 
 lac::ExportOptions options(double tolerance, int degree, long max_spans, bool remove_knots, bool fit, int fit_max_degree) {
   return {.tolerance = tolerance,
@@ -108,14 +108,18 @@ void bind_export(py::module_& m) {
       "tolerance: status inaccurate.");
   m.def(
       "export_curve",
-      [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport p = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
+      [](const Curve& c, const std::string& path, double tolerance, std::optional<int> degree,
+         std::optional<int> fit_max_degree) {
+        const lac::PreparedExport p = lac::prepare_export(
+            {.path = path, .tolerance = tolerance, .degree = degree, .fit_max_degree = fit_max_degree}, kNames);
         return written(path, p, [&] { return lac::export_curve(c.curve, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      py::arg("fit_max_degree") = py::none(),
       "Writes the certified B-spline of the curve to `path`, the format from its extension (.step/.stp, "
       ".iges/.igs, .dxf, .svg); returns to_bspline's dict plus file (None when the bound exceeds the "
-      "tolerance: nothing is written) and format.");
+      "tolerance: nothing is written) and format. fit_max_degree (3-9; 3 for .svg): the fewest control "
+      "points of the fits of degree 3 up to it (to_bspline's fit=True, fit_max_degree).");
 
   // A quadratic LA curve (lac.QuadraticCurve): the arc [s_from, s_to], by default its drawing range.
   auto arc = [](const lac::QuadraticLaCurve& c, std::optional<double> s_from, std::optional<double> s_to) {
@@ -138,13 +142,14 @@ void bind_export(py::module_& m) {
   m.def(
       "export_curve",
       [arc](const lac::QuadraticLaCurve& c, const std::string& path, std::optional<double> s_from,
-            std::optional<double> s_to, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport p = lac::prepare_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
+            std::optional<double> s_to, double tolerance, std::optional<int> degree, std::optional<int> fit_max_degree) {
+        const lac::PreparedExport p = lac::prepare_export(
+            {.path = path, .tolerance = tolerance, .degree = degree, .fit_max_degree = fit_max_degree}, kNames);
         const auto [s0, s1] = arc(c, s_from, s_to);
         return written(path, p, [&] { return lac::export_curve(c, s0, s1, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("s_from") = py::none(), py::arg("s_to") = py::none(),
-      py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      py::arg("tolerance") = 0.0, py::arg("degree") = py::none(), py::arg("fit_max_degree") = py::none(),
       "Writes the certified B-spline of the arc [s_from, s_to] of a quadratic LA curve (default: its "
       "default_range) to `path`; the same dict as for a planar curve.");
 
@@ -160,12 +165,14 @@ void bind_export(py::module_& m) {
       "with control_points n x 3 and curvature_monotone None.");
   m.def(
       "export_curve",
-      [](const SpaceCurve& c, const std::string& path, double tolerance, std::optional<int> degree) {
-        const lac::PreparedExport p =
-            lac::prepare_space_export({.path = path, .tolerance = tolerance, .degree = degree}, kNames);
+      [](const SpaceCurve& c, const std::string& path, double tolerance, std::optional<int> degree,
+         std::optional<int> fit_max_degree) {
+        const lac::PreparedExport p = lac::prepare_space_export(
+            {.path = path, .tolerance = tolerance, .degree = degree, .fit_max_degree = fit_max_degree}, kNames);
         return written(path, p, [&] { return lac::export_curve(c.curve, path, p); });
       },
       py::arg("curve"), py::arg("path"), py::kw_only(), py::arg("tolerance") = 0.0, py::arg("degree") = py::none(),
+      py::arg("fit_max_degree") = py::none(),
       "Writes the B-spline of a space curve to `path` (.step/.stp, .iges/.igs, .dxf; .svg holds planar curves "
       "only: ValueError naming path).");
 }

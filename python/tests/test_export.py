@@ -73,6 +73,14 @@ def test_export_dxf_reads_back(curve, tmp_path):
     splines = list(doc.modelspace().query("SPLINE"))
     assert len(splines) == 1
     assert len(list(splines[0].control_points)) == len(r["control_points"])
+    # fit_max_degree: the fits of degree 3 up to it; the file holds the one chosen.
+    f = lac.export_curve(curve, str(path), tolerance=1e-6, fit_max_degree=8)
+    assert f["usable"] and f["max_deviation"] <= 1e-6 and 3 <= f["degree"] <= 8
+    assert len(f["control_points"]) <= len(r["control_points"])
+    spline = list(ezdxf.readfile(str(path)).modelspace().query("SPLINE"))[0]
+    assert spline.dxf.degree == f["degree"] and len(list(spline.control_points)) == len(f["control_points"])
+    with pytest.raises(ValueError, match="fit_max_degree"):
+        lac.export_curve(curve, str(tmp_path / "curve.svg"), fit_max_degree=5)
 
 
 def test_export_svg_is_cubic_and_bad_input_names_the_parameter(curve, tmp_path):

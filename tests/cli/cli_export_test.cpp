@@ -44,7 +44,9 @@ TEST(CliExport, AcceptanceG2EveryFormat) {
     EXPECT_TRUE(e["curvature_monotone"].is_boolean());
     EXPECT_EQ(e["degree"], ext == "svg" ? 3 : 5);
     EXPECT_EQ(e["continuity"], ext == "svg" ? "G1" : "G2");
-    if (ext != "svg") EXPECT_EQ(e["curvature_monotone"], true);
+    if (ext != "svg") {
+      EXPECT_EQ(e["curvature_monotone"], true);
+    }
     EXPECT_GT(fs::file_size(f), 100u) << f;
   }
 }
@@ -85,6 +87,31 @@ TEST(CliExport, InvalidInput) {
   EXPECT_EQ(test::run_lac(kG2 + " --export " + (temp_dir() / "c.dxf").string() + " --export-degree 4").status, 2);
   const auto j = test::run_lac_json(kG2 + " --export " + (temp_dir() / "c.dxf").string() + " --export-degree 3");
   EXPECT_EQ(j["export"]["degree"], 3);
+}
+
+// --export-fit-degree Q: the fits of degree 3 … Q, the fewest control points kept (on a single
+// smooth segment at a tight tolerance a high degree: fewer points than the default), within the
+// tolerance; an out-of-range Q, or one above 3 for .svg, is invalid input naming the option.
+TEST(CliExport, FitDegreeGivesFewerPoints) {
+  const std::string g1 = "g1 --p0 0,0 --theta0 0 --p1 2,1 --theta1 0.7853981633974483 --alpha -0.5";
+  const std::string f = (temp_dir() / "fit.dxf").string();
+  const auto plain = test::run_lac_json(g1 + " --export " + f + " --export-tol 1e-9");
+  const auto fitted = test::run_lac_json(g1 + " --export " + f + " --export-tol 1e-9 --export-fit-degree 8");
+  ASSERT_EQ(plain["export"]["status"], "ok") << plain.dump();
+  ASSERT_EQ(fitted["export"]["status"], "ok") << fitted.dump();
+  EXPECT_LT(fitted["export"]["control_points"].get<int>(), plain["export"]["control_points"].get<int>());
+  EXPECT_GE(fitted["export"]["degree"].get<int>(), 3);
+  EXPECT_LE(fitted["export"]["degree"].get<int>(), 8);
+  EXPECT_LE(fitted["export"]["max_deviation"].get<double>(), 1e-9);
+  for (const std::string bad : {" --export-fit-degree 2", " --export-fit-degree 10"}) {
+    const auto r = test::run_lac_stderr(g1 + " --export " + f + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.out.find("export-fit-degree"), std::string::npos) << r.out;
+  }
+  const auto svg = test::run_lac_stderr(g1 + " --export " + (temp_dir() / "fit.svg").string() + " --export-fit-degree 5");
+  EXPECT_EQ(svg.status, 2);
+  EXPECT_NE(svg.out.find("export-fit-degree"), std::string::npos) << svg.out;
+  EXPECT_EQ(test::run_lac_json(g1 + " --export " + (temp_dir() / "fit.svg").string() + " --export-fit-degree 3")["export"]["degree"], 3);
 }
 
 TEST(CliExport, BatchWritesOneFilePerRow) {

@@ -110,7 +110,7 @@ TEST(SpaceExport, InputErrors) {
   EXPECT_INPUT_ERROR(to_bspline(c, {.max_spans = 0}), "max_spans");
   EXPECT_INPUT_ERROR(to_bspline(c, {.degree = 4}), "degree");
   EXPECT_INPUT_ERROR(to_bspline(SpaceCurve{}, {}), "curve");
-  EXPECT_INPUT_ERROR(prepare_space_export({.path = "c.svg", .tolerance = 0, .degree = std::nullopt}, {"lac", "export", "export-tol", "export-degree"}),
+  EXPECT_INPUT_ERROR(prepare_space_export({.path = "c.svg", .tolerance = 0, .degree = std::nullopt}, {"lac", "export", "export-tol", "export-degree", "export-fit-degree"}),
                      "export");
   EXPECT_INPUT_ERROR(write_file(temp_file("c.svg"), ExportFormat::svg, acceptance(5).curve), "export");
   const auto few = to_bspline(c, {.tolerance = 1e-12 * c.length(), .max_spans = 3});
