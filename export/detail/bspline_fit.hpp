@@ -299,4 +299,42 @@ FittedBSpline<P> fit_bspline(int p, int q, const std::vector<double>& UH, const 
   return out;
 }
 
+/// The fit of degree q with the fewest knot spans whose proven bound is within `tol`, found by
+/// doubling and then bisection on the span count; none (deviation +inf, no points) when every fit
+/// with fewer than `max_points` control points misses the tolerance.
+template <class P>
+FittedBSpline<P> fewest_spans_fit(int p, int q, const std::vector<double>& UH, const std::vector<P>& PH,
+                                  const std::vector<double>& span_knots, const std::vector<double>& span_deviation,
+                                  const std::vector<double>& fixed, double tol, size_t max_points) {
+  auto points_of = [&](long n) { return fit_bspline(p, q, UH, PH, span_knots, span_deviation, fixed, n); };
+  FittedBSpline<P> best;
+  long lo = 0, hi = 0, upper = 0;  // lo fails (or 0), hi the best success (or 0), upper ≥ hi
+  for (long n = 1; n <= 2 * static_cast<long>(max_points); n *= 2) {
+    FittedBSpline<P> f = points_of(n);
+    if (f.points.size() >= max_points) {
+      upper = n;
+      break;
+    }
+    if (f.deviation <= tol) {
+      best = std::move(f);
+      hi = upper = n;
+      break;
+    }
+    lo = n;
+  }
+  while (upper > lo + 1) {
+    const long mid = lo + (upper - lo) / 2;
+    FittedBSpline<P> f = points_of(mid);
+    if (f.deviation <= tol && (hi == 0 || f.points.size() < best.points.size())) {
+      best = std::move(f);
+      hi = upper = mid;
+    } else if (f.deviation <= tol) {
+      upper = mid;
+    } else {
+      lo = mid;
+    }
+  }
+  return hi > 0 ? best : FittedBSpline<P>{};
+}
+
 }  // namespace lac::detail

@@ -322,9 +322,8 @@ double remove_knots_within(int p, std::vector<double>& U, std::vector<P>& pts, c
 
 /// The end of every to_bspline: r.curve (degree p) assembled from the pieces; with `reduce`, its
 /// knots removed within `tol` (remove_knots_within; the knots at `fixed`, the joints, kept), and with
-/// `fit` also the least-squares fits of degree p (fit_max_degree 0) or 3 … fit_max_degree tried (export/detail/bspline_fit.hpp);
-/// ExportInfo's span
-/// count (non-empty knot spans), continuity and bounds, check(r.curve, r.info), the summary, and
+/// `fit` also the least-squares fits of degree p (fit_max_degree 0) or 3 … fit_max_degree tried
+/// (export/detail/bspline_fit.hpp); ExportInfo's span count (non-empty knot spans), continuity and bounds, check(r.curve, r.info), the summary, and
 /// the status: ok when the deviation is within `tol`, else inaccurate ("<what> <deviation> exceeds
 /// the tolerance <tol>").
 template <class R, class P, class Check>
@@ -346,45 +345,17 @@ void finish_hermite_export(R& r, int p, const std::vector<std::vector<P>>& piece
   }
   if (reduce && fit && deviation <= tol) {
     // Least-squares fits with fewer points within the tolerance (export/detail/bspline_fit.hpp), of
-    // degree p, or of each degree 3 … fit_max_degree when that is set: per degree the fewest spans whose proven bound holds, found by
-    // doubling and bisection. Of those with fewer points than the knot removal's result, the one
-    // with the fewest (the lower degree on a tie) that keeps the curvature monotone wherever that
-    // result does is taken.
+    // degree p, or of each degree 3 … fit_max_degree when that is set (fewest_spans_fit). Of those
+    // with fewer points than the knot removal's result, the one with the fewest (the lower degree on
+    // a tie) that keeps the curvature monotone wherever that result does is taken.
     std::vector<double> UH;
     std::vector<P> PH;
     assemble_hermite_bspline(pieces, junction, knots, p, UH, PH);
     const size_t removed_points = r.curve.control_points.size();
     std::vector<std::pair<int, FittedBSpline<P>>> fits;  // (degree, fit)
     for (int q = fit_max_degree > 0 ? 3 : p; q <= (fit_max_degree > 0 ? fit_max_degree : p); ++q) {
-      auto points_of = [&](long n) { return fit_bspline(p, q, UH, PH, knots, bounds.span_deviation, fixed, n); };
-      FittedBSpline<P> best;
-      long lo = 0, hi = 0, upper = 0;  // lo fails (or 0), hi the best success (or 0), upper ≥ hi
-      for (long n = 1; n <= 2 * static_cast<long>(removed_points); n *= 2) {
-        FittedBSpline<P> f = points_of(n);
-        if (f.points.size() >= removed_points) {
-          upper = n;
-          break;
-        }
-        if (f.deviation <= tol) {
-          best = std::move(f);
-          hi = upper = n;
-          break;
-        }
-        lo = n;
-      }
-      while (upper > lo + 1) {
-        const long mid = lo + (upper - lo) / 2;
-        FittedBSpline<P> f = points_of(mid);
-        if (f.deviation <= tol && (hi == 0 || f.points.size() < best.points.size())) {
-          best = std::move(f);
-          hi = upper = mid;
-        } else if (f.deviation <= tol) {
-          upper = mid;
-        } else {
-          lo = mid;
-        }
-      }
-      if (hi > 0 && best.points.size() < removed_points) fits.emplace_back(q, std::move(best));
+      FittedBSpline<P> f = fewest_spans_fit(p, q, UH, PH, knots, bounds.span_deviation, fixed, tol, removed_points);
+      if (f.points.size() < removed_points && f.deviation <= tol) fits.emplace_back(q, std::move(f));
     }
     std::stable_sort(fits.begin(), fits.end(),
                      [](const auto& x, const auto& y) { return x.second.points.size() < y.second.points.size(); });
