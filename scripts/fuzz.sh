@@ -9,8 +9,9 @@
 #   default      10^6 executions per target (-runs=1000000), at most 3 h each, libFuzzer fork mode
 #                (a crash does not end the run), random seed, corpus kept in build-fuzz/fuzz-corpus/
 #   --short      the test / CI run: deterministic and bounded. Per target about 60 s of executions at
-#                the measured rate (short_runs below), at most 120 s each (so at most 16 min for the 8
-#                targets plus replays), in-process (no fork), -seed=1, a fresh corpus from the
+#                the measured rate (short_runs below), at most 120 s each, one target per core side by
+#                side (FUZZ_PARALLEL=n to change; 8 targets on 2 cores: at most 8 min plus replays),
+#                in-process (no fork), -seed=1, a fresh corpus from the
 #                committed seeds (fuzz/corpus/<target>/, and the saved finding inputs
 #                fuzz/findings/fuzz_<target>/ as a regression corpus)
 #   --max-time   wall-clock cap per target in seconds (the table reports executions reached)
@@ -122,7 +123,9 @@ summary="$BUILD_DIR/fuzz-summary.tsv"
 status=0
 replay_limit=120
 [ "$MODE" = short ] && replay_limit=30
-for t in $TARGETS; do
+# One target: run, classify the inputs it saved, write its summary row to $BUILD_DIR/fuzz-<t>.row.
+fuzz_target() {
+  local t=$1 bin findings corpus runs marker args seeds runlog start seconds execs sigs path f line row
   bin="$BUILD_DIR/fuzz/fuzz_$t"
   [ -x "$bin" ] || { echo "fuzz.sh: no target $bin" >&2; exit 1; }
   findings="$FINDINGS/fuzz_$t"
@@ -182,7 +185,9 @@ for t in $TARGETS; do
          echo "SANITIZER_CRASH: ${line:-no longer reproduces} [$f]" >>"$sigs" ;;
     esac
   done
-  python3 - "$t" "$execs" "$seconds" "$sigs" "$summary" "$runs" "$MAX_TIME" <<'PY'
+  row="$BUILD_DIR/fuzz-$t.row"
+  : >"$row"
+  python3 - "$t" "$execs" "$seconds" "$sigs" "$row" "$runs" "$MAX_TIME" <<'PY'
 import re, sys
 target, execs, seconds, sigs_path, summary, runs, max_time = sys.argv[1:]
 def strip(s):  # one signature per kind of failure, not per input
@@ -204,9 +209,26 @@ notes = "; ".join(e.replace("|", "/") for k in ("crash", "hang", "nan") for e in
 with open(summary, "a") as f:
     f.write("\t".join([target, runs, max_time, execs, seconds, str(len(kinds["crash"])), str(len(kinds["hang"])), str(len(kinds["nan"])), notes]) + "\n")
 PY
-  line=$(tail -1 "$summary")
+  line=$(tail -1 "$row")
   IFS=$'\t' read -r _ _ _ _ _ nc nh nn _ <<<"$line"
   echo "fuzz_$t: $execs executions in ${seconds}s ($((execs / (seconds > 0 ? seconds : 1))) per s), crashes $nc, hangs $nh, NaN $nn" >&2
+}
+# --short runs the targets side by side, one per core (each in one process, deterministic for its
+# seed: the run ends by its execution count, and a target's rate is that of one core); the full
+# campaign runs one target at a time (fork mode has its own workers).
+parallel=1
+[ "$MODE" = short ] && parallel=${FUZZ_PARALLEL:-$(nproc)}
+for t in $TARGETS; do
+  while (($(jobs -rp | wc -l) >= parallel)); do wait -n || true; done
+  rm -f "$BUILD_DIR/fuzz-$t.row"
+  fuzz_target "$t" &
+done
+wait
+for t in $TARGETS; do
+  row="$BUILD_DIR/fuzz-$t.row"
+  [ -s "$row" ] || { echo "fuzz.sh: fuzz_$t wrote no summary row" >&2; exit 1; }
+  cat "$row" >>"$summary"
+  IFS=$'\t' read -r _ _ _ _ _ nc nh nn _ <"$row"
   ((nc + nh + nn == 0)) || status=3
 done
 
