@@ -69,6 +69,15 @@ target_include_directories(lac PUBLIC $<BUILD_INTERFACE:${LAC_BUILD_INCLUDE_DIR}
 target_sources(lac PUBLIC FILE_SET HEADERS BASE_DIRS ${LAC_BUILD_INCLUDE_DIR}
                FILES ${LAC_PUBLIC_HEADER_FILES} ${LAC_BUILD_INCLUDE_DIR}/lac/version.hpp)
 target_link_libraries(lac PUBLIC Boost::boost Eigen3::Eigen PRIVATE Ceres::ceres PkgConfig::CERF)
+# glibc's vector math library (libmvec, x86-64): cos and sin of a quadrature panel's nodes two at a
+# time (common/unit_phasors.cpp); without it the same function loops over std::cos/std::sin.
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+  find_library(LAC_LIBMVEC NAMES mvec)
+endif()
+if(LAC_LIBMVEC)
+  set_property(SOURCE common/unit_phasors.cpp APPEND PROPERTY COMPILE_DEFINITIONS LAC_HAVE_LIBMVEC)
+  target_link_libraries(lac PRIVATE mvec)
+endif()
 
 if(LAC_INSTALL)
   include(GNUInstallDirs)

@@ -18,9 +18,10 @@
 
 namespace lac::detail {
 
-/// At most 205 windings (|Δ| ≤ 200π, |base| < 2π): a fixed buffer, no allocation on the fast path.
+/// At most 205 windings (|Δ| ≤ 200π, |base| < 2π): a fixed buffer, no allocation on the fast path
+/// (and not zeroed: only the first n are read).
 struct Windings {
-  std::array<int, 208> k{};
+  std::array<int, 208> k;
   std::size_t n = 0;
   void push_back(int v) { k[n++] = v; }
   int front() const { return k[0]; }
@@ -42,7 +43,8 @@ inline Windings windings_to_try(double base, std::optional<int> winding, double 
   const int k_hi = std::min(101, static_cast<int>(std::floor((max_turning - base) / two_pi))) + 1;
   for (int k = k_lo; k <= k_hi; ++k)
     if (std::abs(turning_of(base, k)) <= max_turning) w.push_back(k);
-  std::stable_sort(w.k.data(), w.k.data() + w.n, [&](int a, int b) {
+  // A strict total order on distinct k (the keys tie only for equal k): std::sort, no buffer.
+  std::sort(w.k.data(), w.k.data() + w.n, [&](int a, int b) {
     const double ta = std::abs(turning_of(base, a)), tb = std::abs(turning_of(base, b));
     if (ta != tb) return ta < tb;
     if (std::abs(a) != std::abs(b)) return std::abs(a) < std::abs(b);

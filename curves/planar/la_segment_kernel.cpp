@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "lac/common/detail/unit_phasors.hpp"
 #include "lac/common/numeric.hpp"
 #include "lac/curves/planar/la_law.hpp"
 #include "lac/integrators/gauss_legendre.hpp"
@@ -136,11 +137,46 @@ struct Power {
 struct Integral {
   Complex I, dI;
 };
-void add(Integral& acc, Dual weight, Dual phi) {
-  const Complex e = std::polar(1.0, phi.v);
-  acc.I += weight.v * e;
-  acc.dI += Complex(weight.d, weight.v * phi.d) * e;
-}
+// Quadrature nodes gathered so that their e^{iφ} come from one batch call (common/detail/
+// unit_phasors.hpp: four or two at a time): each node adds w0·e^{iφ} to s0 and w1·e^{iφ} to s1, in node
+// order. Flushed when full and when it goes out of scope: read the sums after that.
+class PhasorBatch {
+ public:
+  PhasorBatch(Complex& s0, Complex& s1) : s0_(s0), s1_(s1) {}
+  explicit PhasorBatch(Integral& r) : PhasorBatch(r.I, r.dI) {}
+  PhasorBatch(const PhasorBatch&) = delete;
+  PhasorBatch& operator=(const PhasorBatch&) = delete;
+  ~PhasorBatch() { flush(); }
+  void push(double phi, Complex w0, Complex w1) {
+    phi_[n_] = phi;
+    w_[0][n_] = w0.real(), w_[1][n_] = w0.imag(), w_[2][n_] = w1.real(), w_[3][n_] = w1.imag();
+    if (++n_ == kSize) flush();
+  }
+  // The integrand e^{iφ} with weight w (value and x-derivative): I += w e^{iφ}, dI += (w' + iwφ')e^{iφ}.
+  void add(Dual weight, Dual phi) { push(phi.v, weight.v, Complex(weight.d, weight.v * phi.d)); }
+  void flush() {
+    if (n_ == 0) return;
+    std::array<double, kSize> c, sn;
+    detail::unit_phasors(phi_.data(), static_cast<std::size_t>(n_), c.data(), sn.data());
+    double r0 = 0, i0 = 0, r1 = 0, i1 = 0;  // (w0, w1)·e^{iφ} in real arithmetic
+    for (int k = 0; k < n_; ++k) {
+      r0 += w_[0][k] * c[k] - w_[1][k] * sn[k];
+      i0 += w_[0][k] * sn[k] + w_[1][k] * c[k];
+      r1 += w_[2][k] * c[k] - w_[3][k] * sn[k];
+      i1 += w_[2][k] * sn[k] + w_[3][k] * c[k];
+    }
+    s0_ += Complex(r0, i0);
+    s1_ += Complex(r1, i1);
+    n_ = 0;
+  }
+
+ private:
+  static constexpr int kSize = 20;  // one panel of the largest rule
+  Complex &s0_, &s1_;
+  std::array<double, kSize> phi_{};
+  std::array<std::array<double, kSize>, 4> w_{};  // Re w0, Im w0, Re w1, Im w1
+  int n_ = 0;
+};
 // 20-node panels for a piece turning `turning` rad; −1 past kMaxPanels (or not finite): the piece is
 // not resolved (checked in double: the count can exceed int).
 int panels_for(double turning) {
@@ -254,15 +290,15 @@ struct Kernel {
   Integral clothoid_rule(double A, int panels) {
     const GaussLegendreRule<N>& g = gauss_legendre_rule<N>();
     Integral r;
-    const double h = 1.0 / panels;
-    for (int p = 0; p < panels; ++p)
-      for (int k = 0; k < N; ++k) {
-        const double u = (p + g.nodes[k]) * h, dphi = u * (u - 1);
-        const double phi = phi0 + delta * u + A * dphi;
-        const Complex e = std::polar(g.weights[k] * h, phi);
-        r.I += e;
-        r.dI += Complex(0, dphi) * e;
-      }
+    {
+      PhasorBatch batch(r);
+      const double h = 1.0 / panels;
+      for (int p = 0; p < panels; ++p)
+        for (int k = 0; k < N; ++k) {
+          const double u = (p + g.nodes[k]) * h, dphi = u * (u - 1), w = g.weights[k] * h;
+          batch.push(phi0 + delta * u + A * dphi, w, Complex(0, dphi * w));
+        }
+    }
     evaluations += static_cast<long>(N) * panels;
     return r;
   }
@@ -304,12 +340,12 @@ struct Kernel {
     const double D = dl / -std::expm1(-m), W = std::min(m, std::max(0.0, std::log(std::abs(D) / kSeriesReach)));
     Complex J0, J1;  // ∫₀^m e^{iφ} dv and ∫₀^m (1 − e^(−v)) e^{iφ} dv
     if (W > 0) {
+      PhasorBatch batch(J0, J1);
       const long n = gauss_by_omega(0.5 * W * (std::abs(D) + 1), 0.0, W, [&](double v, double wt) {
         const double g = -std::expm1(-v);
-        const Complex e = std::polar(wt, phe + D * g);
-        J0 += e;
-        J1 += g * e;
+        batch.push(phe + D * g, wt, g * wt);
       });
+      batch.flush();
       if (n < 0) return false;
       evaluations += n;
     }
@@ -360,8 +396,9 @@ struct Kernel {
       const Dual e = Dual{n, (n + 1) * v * dbeta} / den;
       return mirror ? 1.0 + (-e) : e;
     };
+    PhasorBatch batch(r);
     evaluations += gauss_panels<kN>(0.0, 1.0, panels,
-                                    [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+                                    [&](double u, double wt) { batch.add(Dual{wt, 0}, phi0 + delta * E(u)); });
     return true;
   }
 
@@ -398,13 +435,14 @@ struct Kernel {
     }
     cuts[n++] = 1;
     double e_prev = 0;
+    PhasorBatch batch(r);
     for (int i = 0; i + 1 < n; ++i) {
       const double e_next = i + 2 == n ? 1.0 : E(cuts[i + 1]).v;
       const int panels = panels_for(delta * (e_next - e_prev));
       if (panels < 0) return false;
       e_prev = e_next;
       evaluations += gauss_panels<kN>(cuts[i], cuts[i + 1], panels,
-                                      [&](double u, double wt) { add(r, Dual{wt, 0}, phi0 + delta * E(u)); });
+                                      [&](double u, double wt) { batch.add(Dual{wt, 0}, phi0 + delta * E(u)); });
     }
     // log|κ_u| at u = 0 and 1, then q in the offset form (ℓ·expm1(−αℓ)/(−αℓ)).
     const double log_den = mirror ? Y.v + std::log(-den.v) : std::log(-den.v);
@@ -505,6 +543,7 @@ struct Kernel {
           return;
         }
         const int panels = std::max(1, static_cast<int>(want));
+        PhasorBatch batch(r);
         for (int i = 0; i < panels; ++i) {
           const double ta = static_cast<double>(i) / panels, tb = static_cast<double>(i + 1) / panels;
           const double wa = q_lo.v + ta * span.v, wb = q_lo.v + tb * span.v;
@@ -513,7 +552,7 @@ struct Kernel {
           const long nodes = gauss_by_omega(omega, ta, tb, [&](double tau, double wt) {
             const Dual w = q_lo + tau * span;
             const double ew = std::exp(w.v);
-            add(r, wt * (Dual{ew, ew * w.d} * rB * span), phiB + phase(w));
+            batch.add(wt * (Dual{ew, ew * w.d} * rB * span), phiB + phase(w));
           });
           if (nodes < 0) {
             too_steep = true;
@@ -578,9 +617,10 @@ struct Kernel {
     } else {  // q far from 0 on [0, 1]: nodes in u (their derivative is the integrand's), by κ_u = K(q)
       const double omega = 0.5 * std::max(std::abs(law.K(qa.v)), std::abs(law.K(qb.v)));
       const Dual Fa = law.F(qa);
+      PhasorBatch batch(r);
       const long nodes = gauss_by_omega(omega, 0.0, 1.0, [&](double u, double wt) {
         const Dual q = u <= 0.5 ? qa + (2 * u) * c : qb - (2 * (1 - u)) * c;
-        add(r, Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
+        batch.add(Dual{wt, 0}, phi0 + u * law.divided(qa, Fa, q));
       });
       if (nodes < 0) return false;
       evaluations += nodes;
@@ -725,12 +765,15 @@ std::optional<std::complex<double>> power_limit_integral(double delta, double p,
   if (panels < 0) return std::nullopt;
   const std::vector<double>& jac = gauss_legendre_20_node_powers(k - 1, panels);
   const std::vector<double>& phase = gauss_legendre_20_node_powers(k * p, panels);
-  Complex sum;
-  size_t i = 0;
-  evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {
-    sum += (wt * k * jac[i]) * std::polar(1.0, delta * phase[i]);
-    ++i;
-  });
+  Complex sum, unused;
+  {
+    PhasorBatch batch(sum, unused);
+    size_t i = 0;
+    evaluations += gauss_panels<kN>(0.0, 1.0, panels, [&](double, double wt) {
+      batch.push(delta * phase[i], wt * k * jac[i], 0.0);
+      ++i;
+    });
+  }
   return sum;
 }
 
