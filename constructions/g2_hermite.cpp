@@ -89,11 +89,12 @@ void check_problem(const G2Problem& pr) {
   const double scale = std::max({1.0, max_coordinate(pr.start.position), max_coordinate(pr.end.position)});
   if (!(r > 1e-12 * scale)) throw_input_error("g2", "p1", "coincides with p0 (the chord must have positive length)");
   // The solve works on curvatures per chord length (004 §3.2): they must be representable.
-  const std::string kappa_range = "[-" + format_number(std::numeric_limits<double>::max() / r) + ", " +
-                                  format_number(std::numeric_limits<double>::max() / r) +
-                                  "] (kappa times |p1 - p0| must be finite)";
-  if (!std::isfinite(pr.start.kappa * r)) throw_input_error("g2", "kappa0", pr.start.kappa, kappa_range);
-  if (!std::isfinite(pr.end.kappa * r)) throw_input_error("g2", "kappa1", pr.end.kappa, kappa_range);
+  const auto kappa_range = [r] {  // built only for the error
+    return "[-" + format_number(std::numeric_limits<double>::max() / r) + ", " +
+           format_number(std::numeric_limits<double>::max() / r) + "] (kappa times |p1 - p0| must be finite)";
+  };
+  if (!std::isfinite(pr.start.kappa * r)) throw_input_error("g2", "kappa0", pr.start.kappa, kappa_range());
+  if (!std::isfinite(pr.end.kappa * r)) throw_input_error("g2", "kappa1", pr.end.kappa, kappa_range());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lac/curves/planar/la_segment_kernel.hpp"
+#include "lac/solvers/bracket.hpp"
 
 namespace lac::detail {
 namespace {
@@ -98,6 +99,48 @@ double g2_joint_q(const G2System& p, double kappa_tilde, double h) {
   return p.law.q_of_kappa(kappa_tilde);
 }
 
+namespace {
+// α < 0, α ≠ −1: the clothoid's joint curvatures mapped through q = Q(κ̃) bend every segment's
+// turning away from the clothoid's (q is linear in S, κ = K(q) is not; at α = −3 the start's
+// residual grows from ~1e-3 to ~0.5). Instead q1 keeps the first segment's turning,
+// F[q0, q1]·S1 = φ1 − φs, and q2 the total turning, F[q1, q2](S2 − S1) + F[q2, q3](1 − S2) =
+// φe − φ1 (each increasing in its unknown, as K is): the start meets the end-angle equation.
+// Newton steps on the peer set: α = −3 mean 8.7 → 6.0, α = −2 6.8 → 5.4. Left as it was where
+// either root is not found.
+void keep_clothoid_turnings(const G2System& p, G2StartEstimate& e) {
+  const LaLaw& law = p.law;
+  const double k0 = p.kappa_s * e.h, k3 = p.kappa_e * e.h;
+  const double q0 = law.q_of_kappa(k0), q3 = law.q_of_kappa(k3);
+  const double phi1 = p.phi_s + 0.5 * p.s1 * (k0 + e.k1);
+  const auto increasing_root = [](auto&& f, double x0) -> std::optional<double> {
+    if (!std::isfinite(x0)) return std::nullopt;
+    BracketSearchOptions bo;
+    bo.step = std::max(1.0, 0.5 * std::abs(x0));
+    bo.growth = 2;
+    bo.max_probes = 60;
+    const BracketSearchResult b = search_bracket(f, x0, bo);
+    if (!b.found) return std::nullopt;
+    RootOptions ro;
+    ro.x_rtol = 1e-10;  // a start: Newton does the rest
+    ro.max_iterations = 60;
+    const RootResult r = find_root(RootMethod::toms748, f, b.bracket, ro);
+    return std::isfinite(r.root) ? std::optional<double>(r.root) : std::nullopt;
+  };
+  const auto q1 = increasing_root(
+      [&](double q) { return law.divided_difference(q0, q) * p.s1 - (phi1 - p.phi_s); }, law.q_of_kappa(e.k1));
+  if (!q1) return;
+  const auto q2 = increasing_root(
+      [&](double q) {
+        return law.divided_difference(*q1, q) * (p.s2 - p.s1) + law.divided_difference(q, q3) * (1 - p.s2) -
+               (p.phi_e - phi1);
+      },
+      law.q_of_kappa(e.k2));
+  if (!q2) return;
+  const double k1 = law.kappa_of_q(*q1), k2 = law.kappa_of_q(*q2);
+  if (std::isfinite(k1) && std::isfinite(k2)) e.k1 = k1, e.k2 = k2;
+}
+}  // namespace
+
 G2StartEstimate g2_fast_start(const G2System& p) {
   // Small-angle triple clothoid: κ̃ piecewise linear on the nodes 0, S1, S2, 1. With
   // sin φ ≈ φ the end conditions become linear in κ̃1, κ̃2:
@@ -135,6 +178,7 @@ G2StartEstimate g2_fast_start(const G2System& p) {
     e.k2 *= h_new / e.h;
     e.h = h_new;
   }
+  if (p.law.alpha < 0 && p.law.alpha != -1 && !p.law.offset) keep_clothoid_turnings(p, e);
   return e;
 }
 
