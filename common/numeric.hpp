@@ -48,10 +48,12 @@ struct Interval {
   bool contains(double t) const { return (lo_closed ? t >= lo : t > lo) && (hi_closed ? t <= hi : t < hi); }
 };
 
-/// The angle a reduced to (−π, π] (exact: std::remainder, then −π → π).
+/// The angle a reduced to (−π, π] (exact: std::remainder, then −π → π). For |a| < 9.42 (< 3π)
+/// a − 2πk with k ∈ {−1, 0, 1} is that remainder, exact by Sterbenz's lemma, without the call.
 inline double wrap_angle(double a) {
-  const double r = std::remainder(a, 2.0 * std::numbers::pi);
-  return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
+  constexpr double pi = std::numbers::pi, two_pi = 2.0 * std::numbers::pi;
+  const double r = a > -9.42 && a < 9.42 ? (a > pi ? a - two_pi : a < -pi ? a + two_pi : a) : std::remainder(a, two_pi);
+  return r <= -pi ? r + two_pi : r;
 }
 
 }  // namespace lac

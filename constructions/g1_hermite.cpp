@@ -93,11 +93,6 @@ double exponential_guess(double phi0, double delta) {
   return std::isfinite(b) ? b : 0.0;
 }
 
-double wrap(double a) {
-  double r = std::remainder(a, 2 * kPi);
-  if (r <= -kPi) r += 2 * kPi;
-  return r;
-}
 
 G1Shape classify_input(double phi0, double phi1, double delta) {
   if (phi0 == 0 && phi1 == 0 && delta == 0) return G1Shape::straight;
@@ -181,7 +176,7 @@ void finish(G1HermiteResult& res, const G1HermiteProblem& pr, const G1HermiteOpt
     info.qb = seg.qb();
     info.x = x;
     info.inflection = seg.inflection_s();
-    const double angle = std::max(std::abs(wrap(seg.theta_start() - pr.theta0)), std::abs(wrap(seg.theta_end() - pr.theta1)));
+    const double angle = std::max(std::abs(wrap_angle(seg.theta_start() - pr.theta0)), std::abs(wrap_angle(seg.theta_end() - pr.theta1)));
     double position = L * std::abs(t.I.imag()) * r;
     if (o.verify) {
       // Every registry method (igf included) through the construction integrator of the 004 solvers.
@@ -613,8 +608,8 @@ G1HermiteResult solve_g1_hermite(const G1HermiteProblem& pr, const G1HermiteOpti
   sum.accept = o.accept;
   const Complex d = pr.p1 - pr.p0;
   const double chord_angle = std::arg(d);
-  const double phi0 = wrap(pr.theta0 - chord_angle);
-  const double phi1 = wrap(pr.theta1 - chord_angle);
+  const double phi0 = wrap_angle(pr.theta0 - chord_angle);
+  const double phi1 = wrap_angle(pr.theta1 - chord_angle);
   const double base = phi1 - phi0;  // Δ_0; Δ_k = base + 2πk
   const auto turning_of = [&](int k) { return base + 2 * kPi * k; };
 

@@ -16,6 +16,8 @@ constexpr size_t kMaxCandidates = 1'000'000;
 
 PlanarCurve::PlanarCurve(std::vector<LaSegment> segments) : segments_(std::move(segments)) {
   if (segments_.empty()) throw_input_error("PlanarCurve", "segments", "at least one segment is needed");
+  starts_.reserve(segments_.size() + 1);
+  turns_.reserve(segments_.size());
   turns_.push_back(0.0);
   for (size_t k = 0; k < segments_.size(); ++k) {
     starts_.push_back(starts_.back() + segments_[k].length());
