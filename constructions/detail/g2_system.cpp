@@ -120,6 +120,7 @@ void keep_clothoid_turnings(const G2System& p, G2StartEstimate& e) {
     bo.max_probes = 60;
     const BracketSearchResult b = search_bracket(f, x0, bo);
     if (!b.found) return std::nullopt;
+    if (b.bracket.lo == b.bracket.hi) return b.bracket.lo;  // a probe hit the root exactly
     RootOptions ro;
     ro.x_rtol = 1e-10;  // a start: Newton does the rest
     ro.max_iterations = 60;

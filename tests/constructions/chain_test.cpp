@@ -101,6 +101,20 @@ TEST(Chain, GivenTangentsAreMet) {
   }
 }
 
+// The α < 0 G2 start solves two 1-D equations for the joint q (constructions/detail/g2_system.cpp);
+// on this chain (oracle campaign, chain problem 106) one of them is met exactly by a bracket
+// probe, which once reached TOMS 748 as the empty bracket [x, x] and threw InputError.
+TEST(Chain, G2StartWhoseRootIsProbedExactly) {
+  const std::vector<P> pts{{-7.6777448467952851, 6.2291612833796748}, {-9.4414625659794851, 4.512981376105679},
+                           {-8.8432154320288507, 3.6432442019774021}, {-8.3680449932263077, 4.0651800896234391},
+                           {-8.4916984025500071, 6.2680854851132173}, {-8.4122308560110195, 6.3966867526617435}};
+  ChainProblem p{.points = pts, .alpha = -0.3, .continuity = ChainContinuity::g2};
+  ChainResult r;
+  ASSERT_NO_THROW(r = solve_chain(p));
+  ASSERT_TRUE(r.usable()) << r.summary.message;
+  for (const Joint& j : r.curve.joints()) EXPECT_LT(std::abs(j.curvature_gap), 1e-8);
+}
+
 TEST(Chain, G2ChainIsCurvatureContinuous) {
   ChainProblem p{.points = loop8(), .alpha = -0.5, .continuity = ChainContinuity::g2, .closed = true};
   const ChainResult r = solve_chain(p);
