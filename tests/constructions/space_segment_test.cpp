@@ -210,21 +210,24 @@ TEST(SpaceSegment, ConstructionAtGivenUnknownsReturnsTheCurve) {
 }
 
 // The accuracy contract (common/accuracy.hpp): a solve's summary.error is the larger of the
-// end-point residual / chord and the end-tangent error; a construction at given unknowns grades
-// the end point only (v1 is not its condition), so the mirrored construction stays usable.
+// end-point error / chord and the end-tangent error, each the larger of the solver's residual and
+// the certified re-integration's (plus its bound); a construction at given unknowns grades the end
+// point only (v1 is not its condition), so the mirrored construction stays usable.
 TEST(SpaceSegment, AchievedErrorAndAcceptBound) {
   for (const auto& c : cases(false, 2, 67)) {
     const SpaceResult r = solve_g1_space_segment(c.ends, c.g1());
     ASSERT_EQ(r.summary.status, Status::ok) << r.summary.message;
     ASSERT_TRUE(r.summary.error.has_value());
+    ASSERT_TRUE(r.summary.error_estimate.has_value());
     const double chord = (c.ends.p1 - c.ends.p0).norm();
-    EXPECT_EQ(*r.summary.error, std::max(*r.summary.residuals.position / chord, *r.summary.residuals.angle));
+    EXPECT_GE(*r.summary.error, std::max(*r.summary.residuals.position / chord, *r.summary.residuals.angle));
     EXPECT_LE(*r.summary.error, 1e-11);
     EXPECT_EQ(r.summary.accept, kDefaultAccept);
     const SpaceResult m = construct_g1_space_segment(c.ends, c.g1(), c.lambda0, c.nu0, true);
     EXPECT_EQ(m.summary.status, Status::tolerance_not_met) << m.summary.message;
     EXPECT_GT(*m.summary.residuals.angle, kDefaultAccept);
-    EXPECT_EQ(*m.summary.error, *m.summary.residuals.position / chord);
+    EXPECT_GE(*m.summary.error, *m.summary.residuals.position / chord);
+    EXPECT_LT(*m.summary.error, 1e-9);  // the end point only
   }
   const auto param = [](auto&& f) { return test::thrown_parameter(f); };
   for (double bad : {0.0, 0.5, std::nan("")}) {
@@ -233,6 +236,31 @@ TEST(SpaceSegment, AchievedErrorAndAcceptBound) {
     EXPECT_EQ(param([&] { solve_g1_space_segment(cases(false, 1, 67)[0].ends, cases(false, 1, 67)[0].g1(), o); }),
               "accept");
   }
+}
+
+// Oracle space problem 499895 (compound, ceres, magnus6): piece 0's end frame by the integrator
+// was off by 1.9e-6 from the true one (the next piece starts there), while the residuals, by the
+// same integrator, were 1e-15 and the status ok. The certified re-integration measures the joint
+// (1.9e-6 > accept): no run's curve is accepted, and the message gives the achieved error.
+TEST(SpaceSegment, JointFrameVerifiedIndependentlyOfTheIntegrator) {
+  const SpaceEndpoints e{Vec3(-1.0285757118744328, -1.5775922369559963, -2.127345023586706),
+                         Vec3(0.77543231329471762, -0.95703708144287358, -0.36804414259724594),
+                         Vec3(0.77422289819104062, -4.0715191528744334, -2.0893528218268691),
+                         Vec3(0.82178839453716135, -0.64983371963928049, 0.146570624694355)};
+  CompoundSpaceSpec spec;
+  spec.alpha0 = 0.2058305794812294;
+  spec.beta0 = 1.835772136490244;
+  spec.omega0 = 0.17201829080353226;
+  spec.alpha1 = -0.24617061084937109;
+  spec.beta1 = 0.7551840966026222;
+  spec.r_theta = 0.51704600824117186;
+  spec.type = TorsionType::type1;
+  SpaceSegmentOptions o;
+  o.solver = NonlinearMethod::ceres;
+  o.integrator.method = OdeMethod::magnus6;
+  const SpaceResult r = solve_compound_space_segment(e, spec, o);
+  EXPECT_FALSE(r.usable()) << to_string(r.summary.status);
+  EXPECT_NE(r.summary.message.find("achieved error"), std::string::npos) << r.summary.message;
 }
 
 TEST(SpaceSegment, ConstructionWithoutACurveSaysWhy) {
