@@ -314,8 +314,7 @@ SpaceResult to_result(const Problem& pb, const Trial& t, bool tangent_is_conditi
   const double verified_tangent = tangent_angle(rot * last.frame.t, pb.target) + last.frame_error;
   const double verified_position = (end_certified - p1_user).norm() + last.position_error * t.scale;
   r.summary.error_estimate = (end_certified - end_user).norm() + last.position_error * t.scale;
-  r.summary.error = std::max({tangent_is_condition ? std::max(verified_position, position_error) / pb.distance
-                                                   : std::max(verified_position, position_error) / pb.distance,
+  r.summary.error = std::max({std::max(verified_position, position_error) / pb.distance,
                               tangent_is_condition ? std::max(verified_tangent, tangent_error) : 0.0, joint_error});
   const bool met = tangent_error <= o.tangent_tolerance;
   r.conclude(met ? Status::ok : Status::tolerance_not_met,
